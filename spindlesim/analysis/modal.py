@@ -1,0 +1,82 @@
+"""State-space eigen analysis (seed 003 eqs. 24-25), QR algorithm via LAPACK (scipy.linalg.eig).
+
+First-order form p' = A p, p = [q, q'], A = [[0, I], [-M^-1 K, -M^-1 C]].
+An eigenvalue lambda = -zeta w_n + i w_d gives the damped frequency w_d / 2 pi,
+damping ratio zeta = -Re(lambda) / |lambda| and log decrement
+delta = 2 pi zeta / sqrt(1 - zeta^2) = -2 pi Re(lambda) / Im(lambda).
+Whirl direction at a node from the complex (x, y) amplitudes: the orbit is the
+sum of a forward circle of radius |x + i y| / 2 and a backward one of radius
+|x - i y| / 2 (spin about +z); forward when the first is larger.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+
+from ..fe.assembly import SystemMatrices, assemble_shaft, system_matrices
+from ..model.rotor import Rotor
+from ..results import ModalResult
+
+RIGID_BODY_RAD_S = 1e-3 * 2 * np.pi  # roots below 1 mHz are rigid-body roots
+OVERDAMPED_REL = 1e-9  # |Im| / |lambda| below this: a real (overdamped) root
+
+
+def state_matrix(sysm: SystemMatrices) -> np.ndarray:
+    n = sysm.size
+    Minv_K, Minv_C = np.split(sla.solve(sysm.M, np.hstack([sysm.K, sysm.C]), assume_a="pos"), 2, axis=1)
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    A[n:, :n] = -Minv_K
+    A[n:, n:] = -Minv_C
+    return A
+
+
+def whirl_of(shape_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[str, float]:
+    """Classify a mode from its complex (x, y) amplitudes [node, 2]."""
+    fwd = np.abs(shape_xy[:, 0] + 1j * shape_xy[:, 1])
+    bwd = np.abs(shape_xy[:, 0] - 1j * shape_xy[:, 1])
+    size = np.maximum(fwd, bwd)
+    active = size > rel_floor * size.max()
+    is_fwd = fwd[active] >= bwd[active]
+    share = float(is_fwd.mean()) if active.any() else 0.5
+    if share == 1.0:
+        return "forward", share
+    if share == 0.0:
+        return "backward", share
+    return "mixed", share
+
+
+def modal_from_matrices(sysm: SystemMatrices, n_nodes: int, node_z_m: np.ndarray, n_modes: int,
+                        speed_rpm: float) -> ModalResult:
+    A = state_matrix(sysm)
+    lam, vec = sla.eig(A, check_finite=False, overwrite_a=True)
+    n = sysm.size
+    mag = np.abs(lam)
+    rigid = mag < RIGID_BODY_RAD_S
+    real = (~rigid) & (np.abs(lam.imag) <= OVERDAMPED_REL * mag)
+    osc = (~rigid) & (~real) & (lam.imag > 0)
+    order = np.flatnonzero(osc)[np.argsort(lam.imag[osc])][:n_modes]
+    lam_m = lam[order]
+    shapes = vec[:n, order].T.reshape(len(order), n_nodes, -1)[:, :, :4]
+    # normalise: largest translation becomes 1 + 0j
+    trans = shapes[:, :, :2].reshape(len(order), -1)
+    ref = trans[np.arange(len(order)), np.argmax(np.abs(trans), axis=1)]
+    shapes = shapes / ref[:, None, None]
+    whirls, shares = zip(*(whirl_of(s[:, :2]) for s in shapes)) if len(order) else ((), ())
+    zeta = -lam_m.real / np.abs(lam_m)
+    return ModalResult(
+        speed_rpm=speed_rpm, eigenvalues=lam_m, frequency_hz=lam_m.imag / (2 * np.pi),
+        undamped_frequency_hz=np.abs(lam_m) / (2 * np.pi), damping_ratio=zeta,
+        log_dec=-2 * np.pi * lam_m.real / lam_m.imag, whirl=tuple(whirls),
+        forward_fraction=np.array(shares, dtype=float), mode_shape=shapes, node_z_m=node_z_m,
+        overdamped_roots=np.sort(lam[real].real), rigid_body_roots=lam[rigid], unstable=zeta < 0,
+    )
+
+
+def solve_modal(rotor: Rotor, speed_rpm: float | None = None, n_modes: int = 8, shaft=None) -> ModalResult:
+    """Damped modes of the rotor at ``speed_rpm`` (default: the deck's operating speed)."""
+    speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
+    shaft = assemble_shaft(rotor) if shaft is None else shaft
+    sysm = system_matrices(rotor, shaft, speed * np.pi / 30)
+    return modal_from_matrices(sysm, rotor.n_nodes, rotor.node_z_m, n_modes, speed)

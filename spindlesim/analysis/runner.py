@@ -1,0 +1,135 @@
+"""Run a named analysis on a loaded deck and write its HDF5 and PNG files.
+
+This is the scriptable API the CLI wraps::
+
+    from spindlesim.deck import load_deck
+    from spindlesim.analysis.runner import run_analysis
+    paths = run_analysis("modal", load_deck("spindle.yaml"), "out/spindle")
+
+Other packages add analyses with ``register_analysis(name, function)``; the
+function takes (loaded_deck, outdir, run_info, options, progress) and returns
+the written paths.
+"""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from ..deck.loader import LoadedDeck
+from ..model.build import build_rotor
+from ..output.hdf5 import RunInfo
+
+log = logging.getLogger(__name__)
+Progress = Callable[[int, int], None] | None
+_ANALYSES: dict[str, Callable[..., list[Path]]] = {}
+
+
+def register_analysis(name: str, fn: Callable[..., list[Path]]) -> None:
+    _ANALYSES[name] = fn
+
+
+def analyses() -> tuple[str, ...]:
+    return tuple(_ANALYSES)
+
+
+def run_info_for(loaded: LoadedDeck, command_line: str | None = None) -> RunInfo:
+    kw = {} if command_line is None else {"command_line": command_line}
+    return RunInfo(deck_text=loaded.text, deck_source=loaded.source, deck_sha256=loaded.sha256, **kw)
+
+
+def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dict[str, Any] | None = None,
+                 progress: Progress = None, run: RunInfo | None = None) -> list[Path]:
+    """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths."""
+    if name not in _ANALYSES:
+        raise KeyError(f"unknown analysis {name!r}; known: {', '.join(_ANALYSES)}")
+    run = run or run_info_for(loaded)
+    return _ANALYSES[name](loaded, Path(outdir), run, options or {}, progress)
+
+
+def _range(r) -> np.ndarray:
+    if isinstance(r, list):
+        return np.asarray(r, float)
+    return np.linspace(r.start, r.stop, r.count)
+
+
+def _static(loaded, outdir, run, opts, progress):
+    from ..output.rotor_plots import plot_static
+    from ..output.rotor_writers import write_static
+    from .static import solve_static
+
+    d = loaded.deck
+    rotor = build_rotor(d, speed_rpm=opts.get("speed_rpm"))
+    at = d.static.stiffness_at
+    res = solve_static(rotor, at.node - 1, at.dof)
+    log.info("static stiffness at node %d %s: %.4g N/um", at.node, at.dof, res.static_stiffness_N_m / 1e6)
+    return [write_static(outdir / "static.h5", run, res), plot_static(res, outdir / "static_deflection.png")]
+
+
+def _modal(loaded, outdir, run, opts, progress):
+    from ..output.rotor_plots import plot_modes
+    from ..output.rotor_writers import write_modal
+    from .modal import solve_modal
+
+    d = loaded.deck
+    speed = opts.get("speed_rpm") or d.modal.speed_rpm
+    rotor = build_rotor(d, speed_rpm=speed)
+    res = solve_modal(rotor, n_modes=opts.get("modes") or d.modal.modes)
+    return [write_modal(outdir / "modal.h5", run, res), plot_modes(res, outdir / "modal_shapes.png")]
+
+
+def _campbell(loaded, outdir, run, opts, progress):
+    from ..output.rotor_plots import plot_campbell
+    from ..output.rotor_writers import write_campbell
+    from .campbell import solve_campbell
+
+    d = loaded.deck
+    speeds = opts.get("speeds_rpm")
+    speeds = _range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
+    rotor = build_rotor(d)
+    res = solve_campbell(rotor, speeds, n_modes=opts.get("modes") or d.campbell.modes, progress=progress)
+    return [write_campbell(outdir / "campbell.h5", run, res), plot_campbell(res, outdir / "campbell.png")]
+
+
+def _frf(loaded, outdir, run, opts, progress):
+    from ..output.rotor_plots import plot_frf
+    from ..output.rotor_writers import write_frf
+    from .frf import solve_frf
+
+    d = loaded.deck
+    fr = d.frf
+    rotor = build_rotor(d, speed_rpm=opts.get("speed_rpm") or fr.speed_rpm)
+    res = solve_frf(rotor, _range(fr.frequencies_hz), fr.input.node, fr.input.dof, fr.output.node, fr.output.dof)
+    return [write_frf(outdir / "frf.h5", run, res),
+            *plot_frf(res, outdir / "frf_magnitude_phase.png", outdir / "frf_real_imag.png")]
+
+
+def _unbalance(loaded, outdir, run, opts, progress):
+    from ..output.rotor_plots import plot_unbalance
+    from ..output.rotor_writers import write_unbalance
+    from .frf import solve_unbalance
+
+    d = loaded.deck
+    u = d.unbalance
+    if u is None:
+        raise ValueError("the deck has no 'unbalance' section (node, amount_g_mm, speeds_rpm)")
+    rotor = build_rotor(d)
+    res = solve_unbalance(rotor, _range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
+                          u.output.node, u.output.dof)
+    return [write_unbalance(outdir / "unbalance.h5", run, res), plot_unbalance(res, outdir / "unbalance.png")]
+
+
+for _n, _f in (("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
+               ("unbalance", _unbalance)):
+    register_analysis(_n, _f)
+
+
+def default_analyses(loaded: LoadedDeck) -> list[str]:
+    """What ``spindlesim run`` does when the deck has no ``analyses`` list."""
+    names = ["static", "modal", "campbell", "frf"]
+    if loaded.deck.unbalance is not None:
+        names.append("unbalance")
+    return names

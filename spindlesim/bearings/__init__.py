@@ -1,0 +1,1 @@
+"""spindlesim.bearings."""

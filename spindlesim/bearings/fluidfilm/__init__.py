@@ -1,0 +1,23 @@
+"""Fluid-film journal bearings: plain (360 deg or grooved) and multilobe (3-lobe).
+
+Layers (each usable on its own):
+
+- :mod:`geometry`     film thickness of plain and multilobe bearings
+- :mod:`reynolds`     finite-volume Reynolds equation with the Reynolds (Swift-Stieber)
+                      cavitation condition solved as a linear complementarity problem
+- :mod:`equilibrium`  Newton iteration on the journal position for a given load
+- :mod:`coefficients` eight stiffness and damping coefficients
+- :mod:`performance`  friction, flows, minimum film, Reynolds number
+- :mod:`viscosity`    Walther (ASTM D341) viscosity-temperature relation, ISO VG table
+- :mod:`thermal`      thermal equilibrium of seed 003 eqs. 4-14
+- :mod:`bearing`      :class:`FluidFilmBearing` implementing the linearised bearing protocol
+"""
+
+from spindlesim.bearings.fluidfilm.geometry import (
+    BearingGeometry,
+    Land,
+    multilobe_geometry,
+    plain_geometry,
+)
+
+__all__ = ["BearingGeometry", "Land", "multilobe_geometry", "plain_geometry"]

@@ -1,0 +1,1 @@
+"""One click command per module; ``spindlesim.cli`` imports them only when invoked."""

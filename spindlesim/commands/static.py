@@ -1,0 +1,12 @@
+import click
+
+from .common import deck_argument, outdir_option, run_and_report
+
+
+@click.command("static")
+@deck_argument
+@outdir_option
+@click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
+def command(deck, outdir, speed_rpm):
+    """Static deflection K^-1 Q, slopes, bearing reactions and static stiffness."""
+    run_and_report("static", deck, outdir, "spindle", {"speed_rpm": speed_rpm})

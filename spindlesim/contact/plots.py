@@ -1,0 +1,53 @@
+"""Figures of a contact result (matplotlib Figure API, no pyplot state).
+
+Plots only draw what :class:`~spindlesim.contact.result.ContactResult` holds; they
+compute no physics.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from .result import ContactResult
+
+__all__ = ["pressure_map_figure", "roller_profile_figure"]
+
+
+def pressure_map_figure(result: ContactResult, title: str = "Contact pressure") -> Figure:
+    """Colour map of p(x, y) [GPa] with the maximum marked; axes in mm."""
+    fig = Figure(figsize=(8.0, 4.0), layout="constrained")
+    ax = fig.add_subplot()
+    x_mm, y_mm = 1e3 * result.x_m, 1e3 * result.y_m
+    mesh = ax.pcolormesh(y_mm, x_mm, result.pressure_Pa / 1e9, shading="nearest", cmap="viridis")
+    cb = fig.colorbar(mesh, ax=ax)
+    cb.set_label("pressure [GPa]")
+    xm, ym = result.max_location_m
+    ax.plot([1e3 * ym], [1e3 * xm], "r+", ms=10,
+            label=f"max {result.max_pressure_Pa / 1e9:.3f} GPa"
+            + (" (edge singularity)" if result.edge_singular else ""))
+    ax.set_xlabel("y along roller [mm]")
+    ax.set_ylabel("x across contact [mm]")
+    ax.set_title(f"{title}: load {result.load_N:.4g} N")
+    ax.legend(loc="upper right", fontsize="small")
+    return fig
+
+
+def roller_profile_figure(result: ContactResult) -> Figure:
+    """Centre-line pressure [GPa] and contact half-width [mm] along the roller."""
+    fig = Figure(figsize=(8.0, 5.5), layout="constrained")
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
+    y_mm = 1e3 * result.y_m
+    ax1.plot(y_mm, result.centreline_pressure_Pa / 1e9, label="x = 0")
+    ax1.plot(y_mm, result.pressure_Pa.max(axis=0) / 1e9, "--", label="max over x")
+    ax1.set_ylabel("pressure [GPa]")
+    ax1.legend(fontsize="small")
+    if result.edge_singular:
+        ax1.set_title("edge values are grid-dependent (edge singularity)", fontsize="small")
+    ax2.plot(y_mm, 1e3 * result.half_width_m)
+    ax2.set_ylabel("half-width [mm]")
+    ax2.set_xlabel("y along roller [mm]")
+    ax2.set_ylim(bottom=0.0)
+    for ax in (ax1, ax2):
+        ax.grid(True, alpha=0.3)
+    return fig

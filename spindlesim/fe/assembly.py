@@ -1,0 +1,131 @@
+"""Assembly of the rotor's global matrices (dense, SI) from element and disk matrices."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from ..model.dofs import DOFS_4, DofMap
+from ..model.rotor import Rotor
+from .timoshenko import ElementMatrices, lateral_element_matrices
+
+
+@dataclass(frozen=True)
+class ShaftMatrices:
+    """Speed-independent global matrices of shaft and disks (bearings excluded).
+
+    Equation of motion (seed 003 eq. 21 before adding bearings):
+    M q'' + (eta_v K_B + Omega G) q' + (a_h K_B + K_A + (eta_v Omega + b_h) K_C) q = Q,
+    a_h = (1 + eta_h)/sqrt(1 + eta_h^2), b_h = eta_h/sqrt(1 + eta_h^2).
+    """
+
+    M: np.ndarray
+    G: np.ndarray
+    K_B: np.ndarray
+    K_A: np.ndarray
+    K_C: np.ndarray
+    gravity_unit: np.ndarray  # load vector per (m/s^2) of gravity along -y
+    eta_v: float
+    eta_h: float
+
+    def stiffness(self, speed_rad_s: float) -> np.ndarray:
+        """Shaft stiffness incl. axial load and the circulatory term of internal damping."""
+        a_h = (1 + self.eta_h) / np.sqrt(1 + self.eta_h**2)
+        b_h = self.eta_h / np.sqrt(1 + self.eta_h**2)
+        K = a_h * self.K_B + self.K_A
+        circ = self.eta_v * speed_rad_s + b_h
+        if circ:
+            K = K + circ * self.K_C
+        return K
+
+    def damping(self, speed_rad_s: float) -> np.ndarray:
+        """Shaft damping: internal viscous eta_v K_B plus gyroscopic Omega G."""
+        C = speed_rad_s * self.G
+        if self.eta_v:
+            C = C + self.eta_v * self.K_B
+        return C
+
+
+def _scatter(dofs: DofMap, elem: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Global (row, col) index arrays for every element's 8x8 lateral block."""
+    n_elem = elem.shape[0]
+    idx = np.array([[dofs.index(e + a, d) for a in (0, 1) for d in DOFS_4] for e in range(n_elem)])
+    return idx[:, :, None], idx[:, None, :]
+
+
+def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
+    """Assemble shaft elements and rigid disks into global matrices."""
+    el = rotor.elements
+    em: ElementMatrices = lateral_element_matrices(
+        el.length_m, el.area_m2, el.second_moment_m4, el.density_kg_m3,
+        el.youngs_modulus_Pa, el.shear_modulus_Pa, el.shear_coefficient, el.axial_force_N,
+    )
+    dofs = rotor.dofs
+    n = dofs.size
+    rows, cols = _scatter(dofs, em.mass)
+
+    def glob(e: np.ndarray) -> np.ndarray:
+        out = np.zeros((n, n))
+        np.add.at(out, (np.broadcast_to(rows, e.shape), np.broadcast_to(cols, e.shape)), e)
+        return out
+
+    M, G, KB, KA, KC = (glob(m) for m in (em.mass, em.gyroscopic, em.stiffness_bending, em.stiffness_axial, em.circulatory))
+    grav = np.zeros(n)
+    np.add.at(grav, rows[:, :, 0], em.gravity_unit)
+    for disk in rotor.disks:
+        ix, iy, itx, ity = dofs.lateral(disk.node)
+        M[ix, ix] += disk.mass_kg
+        M[iy, iy] += disk.mass_kg
+        M[itx, itx] += disk.diametral_inertia_kg_m2
+        M[ity, ity] += disk.diametral_inertia_kg_m2
+        # Id th_x'' + Ip Omega th_y' = M_x ;  Id th_y'' - Ip Omega th_x' = M_y
+        G[itx, ity] += disk.polar_inertia_kg_m2
+        G[ity, itx] -= disk.polar_inertia_kg_m2
+        grav[iy] -= disk.mass_kg
+    return ShaftMatrices(M=M, G=G, K_B=KB, K_A=KA, K_C=KC, gravity_unit=grav,
+                         eta_v=el.viscous_damping_s, eta_h=el.hysteretic_loss_factor)
+
+
+def add_bearings(
+    rotor: Rotor, K: np.ndarray, C: np.ndarray, speed_rad_s: float, static_loads: dict | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """Add each bearing's linearised 2x2 K and C at its node's (x, y) DOFs; returns new arrays."""
+    K = K.copy()
+    C = C.copy()
+    for b in rotor.bearings:
+        load = None if static_loads is None else static_loads.get(b.name)
+        kb, cb = b.linearized(speed_rad_s, load)
+        i = rotor.dofs.lateral(b.node)[:2]
+        K[np.ix_(i, i)] += kb
+        C[np.ix_(i, i)] += cb
+    return K, C
+
+
+@dataclass(frozen=True)
+class SystemMatrices:
+    """M q'' + C q' + K q = Q at one spin speed, bearings included (seed 003 eq. 21)."""
+
+    M: np.ndarray
+    C: np.ndarray
+    K: np.ndarray
+    speed_rad_s: float
+
+    @cached_property
+    def size(self) -> int:
+        return self.M.shape[0]
+
+
+def system_matrices(rotor: Rotor, shaft: ShaftMatrices, speed_rad_s: float, static_loads: dict | None = None) -> SystemMatrices:
+    K, C = add_bearings(rotor, shaft.stiffness(speed_rad_s), shaft.damping(speed_rad_s), speed_rad_s, static_loads)
+    return SystemMatrices(M=shaft.M, C=C, K=K, speed_rad_s=speed_rad_s)
+
+
+def load_vector(rotor: Rotor, shaft: ShaftMatrices) -> np.ndarray:
+    """Static load vector: point loads plus gravity (if on)."""
+    Q = rotor.gravity_m_s2 * shaft.gravity_unit
+    Q = Q.copy()
+    for load in rotor.loads:
+        Q[rotor.dofs.lateral(load.node)] += np.asarray(load.force_N)
+    return Q
