@@ -26,7 +26,7 @@ bench: install-test
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python benchmarks/run.py
 
 golden: install-test
-	$(BIN)/python tests/golden/regenerate.py
+	$(BIN)/python -m tests.golden.regenerate
 
 clean:
 	rm -rf $(VENV) $(OUT) build *.egg-info

@@ -34,7 +34,7 @@ class ModalResult:
     forward_fraction: np.ndarray  # share of nodes whirling forward, by mode
     mode_shape: np.ndarray  # complex [mode, node, 4] (x, y, theta_x, theta_y), largest translation = 1
     node_z_m: np.ndarray
-    overdamped_roots: np.ndarray  # real negative roots, 1/s
+    overdamped_roots: np.ndarray  # complex roots with zeta >= 0.999 (incl. real), 1/s
     rigid_body_roots: np.ndarray  # |lambda| below the rigid-body threshold
     unstable: np.ndarray  # bool per mode: damping ratio < 0
 

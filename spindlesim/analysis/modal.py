@@ -4,6 +4,8 @@ First-order form p' = A p, p = [q, q'], A = [[0, I], [-M^-1 K, -M^-1 C]].
 An eigenvalue lambda = -zeta w_n + i w_d gives the damped frequency w_d / 2 pi,
 damping ratio zeta = -Re(lambda) / |lambda| and log decrement
 delta = 2 pi zeta / sqrt(1 - zeta^2) = -2 pi Re(lambda) / Im(lambda).
+Roots with zeta >= 0.999 (real roots included, one of each conjugate pair) and
+roots below 1 mHz (rigid-body) are reported apart from the mode list.
 Whirl direction at a node from the complex (x, y) amplitudes: the orbit is the
 sum of a forward circle of radius |x + i y| / 2 and a backward one of radius
 |x - i y| / 2 (spin about +z); forward when the first is larger.
@@ -19,7 +21,7 @@ from ..model.rotor import Rotor
 from ..results import ModalResult
 
 RIGID_BODY_RAD_S = 1e-3 * 2 * np.pi  # roots below 1 mHz are rigid-body roots
-OVERDAMPED_REL = 1e-9  # |Im| / |lambda| below this: a real (overdamped) root
+OVERDAMPED_ZETA = 0.999  # damping ratio at or above this: reported with the overdamped roots
 
 
 def state_matrix(sysm: SystemMatrices) -> np.ndarray:
@@ -54,7 +56,8 @@ def modal_from_matrices(sysm: SystemMatrices, n_nodes: int, node_z_m: np.ndarray
     n = sysm.size
     mag = np.abs(lam)
     rigid = mag < RIGID_BODY_RAD_S
-    real = (~rigid) & (np.abs(lam.imag) <= OVERDAMPED_REL * mag)
+    # real roots, and roots so close to critical damping that a "damped frequency" is meaningless
+    real = (~rigid) & (-lam.real >= OVERDAMPED_ZETA * mag) & (lam.imag >= 0)
     osc = (~rigid) & (~real) & (lam.imag > 0)
     order = np.flatnonzero(osc)[np.argsort(lam.imag[osc])][:n_modes]
     lam_m = lam[order]
@@ -70,7 +73,7 @@ def modal_from_matrices(sysm: SystemMatrices, n_nodes: int, node_z_m: np.ndarray
         undamped_frequency_hz=np.abs(lam_m) / (2 * np.pi), damping_ratio=zeta,
         log_dec=-2 * np.pi * lam_m.real / lam_m.imag, whirl=tuple(whirls),
         forward_fraction=np.array(shares, dtype=float), mode_shape=shapes, node_z_m=node_z_m,
-        overdamped_roots=np.sort(lam[real].real), rigid_body_roots=lam[rigid], unstable=zeta < 0,
+        overdamped_roots=lam[real][np.argsort(-lam[real].real)], rigid_body_roots=lam[rigid], unstable=zeta < 0,
     )
 
 

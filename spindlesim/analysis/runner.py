@@ -50,6 +50,11 @@ def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dic
     return _ANALYSES[name](loaded, Path(outdir), run, options or {}, progress)
 
 
+def _first(*values):
+    """The first value that is not None (0 is a valid speed)."""
+    return next((v for v in values if v is not None), None)
+
+
 def _range(r) -> np.ndarray:
     if isinstance(r, list):
         return np.asarray(r, float)
@@ -75,9 +80,9 @@ def _modal(loaded, outdir, run, opts, progress):
     from .modal import solve_modal
 
     d = loaded.deck
-    speed = opts.get("speed_rpm") or d.modal.speed_rpm
+    speed = _first(opts.get("speed_rpm"), d.modal.speed_rpm)
     rotor = build_rotor(d, speed_rpm=speed)
-    res = solve_modal(rotor, n_modes=opts.get("modes") or d.modal.modes)
+    res = solve_modal(rotor, n_modes=_first(opts.get("modes"), d.modal.modes))
     return [write_modal(outdir / "modal.h5", run, res), plot_modes(res, outdir / "modal_shapes.png")]
 
 
@@ -90,7 +95,7 @@ def _campbell(loaded, outdir, run, opts, progress):
     speeds = opts.get("speeds_rpm")
     speeds = _range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
     rotor = build_rotor(d)
-    res = solve_campbell(rotor, speeds, n_modes=opts.get("modes") or d.campbell.modes, progress=progress)
+    res = solve_campbell(rotor, speeds, n_modes=_first(opts.get("modes"), d.campbell.modes), progress=progress)
     return [write_campbell(outdir / "campbell.h5", run, res), plot_campbell(res, outdir / "campbell.png")]
 
 
@@ -101,7 +106,7 @@ def _frf(loaded, outdir, run, opts, progress):
 
     d = loaded.deck
     fr = d.frf
-    rotor = build_rotor(d, speed_rpm=opts.get("speed_rpm") or fr.speed_rpm)
+    rotor = build_rotor(d, speed_rpm=_first(opts.get("speed_rpm"), fr.speed_rpm))
     res = solve_frf(rotor, _range(fr.frequencies_hz), fr.input.node, fr.input.dof, fr.output.node, fr.output.dof)
     return [write_frf(outdir / "frf.h5", run, res),
             *plot_frf(res, outdir / "frf_magnitude_phase.png", outdir / "frf_real_imag.png")]

@@ -172,9 +172,8 @@ def lateral_element_matrices(
     """Nelson's 8x8 Timoshenko element matrices for every element."""
     p = planar_matrices(length, area, second_moment, density, youngs, shear_modulus, kappa, axial_force)
     polar_per_length = 2.0 * np.asarray(density, float) * np.asarray(second_moment, float)
-    gyro = _scatter_cross(polar_per_length[:, None, None] * p.rotary_unit)
-    # sign: theta_x row gets +Ip*Omega*theta_y' (disk: Id th_x'' + Ip W th_y' = M_x)
-    gyroscopic = -gyro
+    # theta_x row gets +Ip*Omega*theta_y' as for a disk (Id th_x'' + Ip W th_y' = M_x)
+    gyroscopic = _scatter_cross(polar_per_length[:, None, None] * p.rotary_unit)
     circulatory = _scatter_cross(p.stiffness_bending)
     grav = np.zeros((len(p.load_unit), 8))
     grav[:, _YZ_INDEX] = -(np.asarray(density, float) * np.asarray(area, float))[:, None] * p.load_unit * _YZ_SIGN

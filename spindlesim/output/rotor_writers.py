@@ -36,7 +36,7 @@ def write_modal(path: Path, run: RunInfo, r: ModalResult) -> Path:
         "/modal/forward_fraction": (r.forward_fraction, "1"),
         "/modal/mode_shape": (r.mode_shape, "m, m, rad, rad (normalised: largest translation 1)"),
         "/modal/node_z_m": (r.node_z_m, "m"),
-        "/modal/overdamped_roots": (r.overdamped_roots, "1/s"),
+        "/modal/overdamped_roots": (r.overdamped_roots, "1/s (complex; zeta >= 0.999)"),
         "/modal/rigid_body_roots": (r.rigid_body_roots, "1/s"),
     }, {"/modal": {"speed_rpm": r.speed_rpm, "mode_shape_dofs": "x, y, theta_x, theta_y"}})
 

@@ -1,0 +1,120 @@
+"""Every subcommand on the embedded default deck, and bad decks (exit 2, located message, nothing written)."""
+
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from spindlesim.cli import main
+
+EXPECTED = {
+    "static": ["static.h5", "static_deflection.png"],
+    "modal": ["modal.h5", "modal_shapes.png"],
+    "campbell": ["campbell.h5", "campbell.png"],
+    "frf": ["frf.h5", "frf_magnitude_phase.png", "frf_real_imag.png"],
+    "unbalance": ["unbalance.h5", "unbalance.png"],
+}
+REQUIRED = {
+    "static": ["/static/node_z_m", "/static/displacement_m", "/static/slope_rad", "/static/bearing_force_N"],
+    "modal": ["/modal/frequency_hz", "/modal/damping_ratio", "/modal/log_dec", "/modal/whirl", "/modal/mode_shape"],
+    "campbell": ["/campbell/speed_rpm", "/campbell/frequency_hz", "/campbell/log_dec", "/campbell/whirl"],
+    "frf": ["/frf/frequency_hz", "/frf/receptance_m_N"],
+    "unbalance": ["/unbalance/speed_rpm", "/unbalance/response_m"],
+}
+
+
+def _datasets(f):
+    out = []
+    f.visititems(lambda name, obj: out.append(obj) if isinstance(obj, h5py.Dataset) else None)
+    return out
+
+
+@pytest.mark.parametrize("cmd", list(EXPECTED))
+def test_subcommand_on_default_deck(cmd, tmp_path):
+    args = [cmd, "-o", str(tmp_path)]
+    if cmd == "campbell":
+        args += ["--speeds", "0:12000:8"]
+    res = CliRunner().invoke(main, args)
+    assert res.exit_code == 0, res.output
+    for name in EXPECTED[cmd]:
+        assert (tmp_path / name).stat().st_size > 1000
+    with h5py.File(tmp_path / f"{cmd}.h5") as f:
+        for key in ("spindlesim_version", "deck_sha256", "deck_text", "command_line"):
+            assert key in f.attrs
+        for ds in REQUIRED[cmd]:
+            assert ds in f
+        assert all("units" in d.attrs for d in _datasets(f))
+    assert not list(tmp_path.glob("*.tmp*"))
+
+
+def test_modal_options_and_attrs(tmp_path):
+    res = CliRunner().invoke(main, ["modal", "--speed", "0", "--modes", "4", "-o", str(tmp_path)])
+    assert res.exit_code == 0, res.output
+    with h5py.File(tmp_path / "modal.h5") as f:
+        assert f["/modal"].attrs["speed_rpm"] == 0
+        assert f["/modal/frequency_hz"].shape == (4,)
+        assert f["/modal/mode_shape"].shape == (4, 26, 4)
+        assert np.all(np.diff(f["/modal/frequency_hz"][()]) >= 0)
+
+
+def test_run_writes_every_analysis(tmp_path):
+    res = CliRunner().invoke(main, ["run", "-o", str(tmp_path)])
+    assert res.exit_code == 0, res.output
+    for files in EXPECTED.values():
+        for name in files:
+            assert (tmp_path / name).exists()
+
+
+BAD = """title: bad
+shaft:
+  elements:
+    - [52.6, 22.0, 28.0, 7833, 206.8, 80.0, 0.3, 0.0]
+bearings:
+  - {name: a, node: 5, type: linear, K_N_m: [[1.0e8, 0], [0, 1.0e8]]}
+operating: {speed_rpm: 100, colour: blue}
+"""
+
+
+@pytest.mark.parametrize("cmd", list(EXPECTED) + ["run"])
+def test_bad_deck_exit_2_nothing_written(cmd, tmp_path):
+    deck = tmp_path / "bad.yaml"
+    deck.write_text(BAD)
+    out = tmp_path / "out"
+    res = CliRunner().invoke(main, [cmd, str(deck), "-o", str(out)])
+    assert res.exit_code == 2
+    assert f"{deck}:7:29: operating.colour: unknown key" in res.output
+    assert not out.exists()
+
+
+def test_out_of_range_node_is_located(tmp_path):
+    deck = tmp_path / "bad.yaml"
+    deck.write_text(BAD.replace(", colour: blue", ""))
+    res = CliRunner().invoke(main, ["static", str(deck), "-o", str(tmp_path / "out")])
+    assert res.exit_code == 2
+    assert f"{deck}:6:15: bearings[0].node: node 5 is out of range: the shaft has nodes 1..2" in res.output
+
+
+def test_missing_deck_file(tmp_path):
+    res = CliRunner().invoke(main, ["modal", str(tmp_path / "nope.yaml"), "-o", str(tmp_path / "o")])
+    assert res.exit_code == 2
+    assert "cannot read deck" in res.output
+
+
+def test_bad_speed_range_is_a_usage_error(tmp_path):
+    res = CliRunner().invoke(main, ["campbell", "--speeds", "100:50:3", "-o", str(tmp_path)])
+    assert res.exit_code == 2
+
+
+def test_version_and_help_do_not_import_numerics():
+    code = ("import sys; from spindlesim.cli import main; "
+            "sys.argv=['spindlesim','--help']\n"
+            "try:\n main()\nexcept SystemExit: pass\n"
+            "bad=[m for m in ('numpy','scipy','h5py','matplotlib') if m in sys.modules]\n"
+            "sys.stderr.write(repr(bad)); sys.exit(1 if bad else 0)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    r = subprocess.run([sys.executable, "-m", "spindlesim", "--version"], capture_output=True, text=True)
+    assert r.returncode == 0 and "0.1.0" in r.stdout

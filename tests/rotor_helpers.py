@@ -1,0 +1,36 @@
+"""Small deck builders shared by rotor tests."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from spindlesim.deck import parse_deck
+from spindlesim.model.build import build_rotor
+
+
+def uniform_rows(n: int, length_mm: float, od_mm: float, id_mm: float = 0.0, rho: float = 7810.0,
+                 E_GPa: float = 211.0, G_GPa: float = 81.2, nu: float = 0.3, fa: float = 0.0) -> str:
+    row = f"    - [{od_mm}, {id_mm}, {length_mm / n!r}, {rho}, {E_GPa}, {G_GPa}, {nu}, {fa}]\n"
+    return "shaft:\n  elements:\n" + row * n
+
+
+def deck_text(body: str, speed_rpm: float = 0.0) -> str:
+    return f"title: test\n{body}operating:\n  speed_rpm: {speed_rpm}\n"
+
+
+def rotor_from(body: str, speed_rpm: float = 0.0):
+    return build_rotor(parse_deck(deck_text(body, speed_rpm), "test.yaml").deck)
+
+
+def isotropic_bearing(name: str, node: int, k: float, c: float = 0.0) -> str:
+    return (f"  - {{name: {name}, node: {node}, type: linear, K_N_m: [[{k!r}, 0.0], [0.0, {k!r}]], "
+            f"C_Ns_m: [[{c!r}, 0.0], [0.0, {c!r}]]}}\n")
+
+
+def disk_entry(node: int, rho: float, od: float, bore: float, width: float) -> tuple[str, float, float, float]:
+    """Steel disk (SI dims): returns deck line and (m, Ip, Id) with Ip = m (ro^2 + ri^2)/2, Id = Ip/2 + m w^2/12."""
+    ro, ri = od / 2, bore / 2
+    m = rho * np.pi * (ro**2 - ri**2) * width
+    Ip = m * (ro**2 + ri**2) / 2
+    Id = Ip / 2 + m * width**2 / 12
+    return f"  - {{node: {node}, mass_kg: {m!r}, Ip_kg_m2: {Ip!r}, Id_kg_m2: {Id!r}}}\n", m, Ip, Id
