@@ -3,7 +3,9 @@
 Mode tracking: the modal assurance criterion between complex mode shapes,
 MAC(a, b) = |a^H b|^2 / ((a^H a)(b^H b)), weighted by frequency proximity, is
 maximised over assignments (Hungarian algorithm, scipy.optimize.linear_sum_assignment).
-A critical speed is where the 1x line f = N/60 crosses a forward-whirl mode.
+A critical speed is where the 1x line f = N/60 crosses a forward-whirl mode whose
+amplification factor AF = 1/(2 zeta) is at least 2.5 (API 684: a crossing with
+AF < 2.5 is critically damped and not a critical speed).
 """
 
 from __future__ import annotations
@@ -68,13 +70,18 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
         prev_freq = m.frequency_hz[cols[valid]] if prev_freq is not None else m.frequency_hz[: len(take)]
         if progress is not None:
             progress(i + 1, len(speeds))
-    crit, crit_mode = critical_speeds(speeds, freq, whirl)
+    crit, crit_mode = critical_speeds(speeds, freq, whirl, zeta)
     return CampbellResult(speed_rpm=speeds, frequency_hz=freq, log_dec=logdec, damping_ratio=zeta,
                           whirl=whirl.astype(str), critical_speeds_rpm=crit, critical_modes=crit_mode)
 
 
-def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Speeds where the 1x excitation line crosses a forward mode (linear interpolation)."""
+API684_MIN_AF = 2.5
+
+
+def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarray,
+                    damping_ratio: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Speeds where the 1x excitation line crosses a forward mode with AF = 1/(2 zeta) >= 2.5
+    (linear interpolation between the speeds of the sweep)."""
     out, modes = [], []
     g = freq_hz - speeds_rpm[:, None] / 60.0
     for k in range(freq_hz.shape[1]):
@@ -85,6 +92,10 @@ def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarr
             if "forward" not in (whirl[i, k], whirl[i + 1, k]):
                 continue
             t = a / (a - b)
+            if damping_ratio is not None:
+                z = damping_ratio[i, k] + t * (damping_ratio[i + 1, k] - damping_ratio[i, k])
+                if z > 0 and 1.0 / (2.0 * z) < API684_MIN_AF:
+                    continue
             out.append(speeds_rpm[i] + t * (speeds_rpm[i + 1] - speeds_rpm[i]))
             modes.append(k)
     order = np.argsort(out)

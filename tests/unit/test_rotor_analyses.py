@@ -118,3 +118,29 @@ def test_gravity_load_total():
     w = mass * 9.80665 / 0.5
     sag = 5 * w * 0.5**4 / (384 * E * I) + mass * 9.80665 / 2 / 1e8
     assert -r.displacement_m[:, 1].min() == pytest.approx(sag, rel=0.02)
+
+
+def test_campbell_critical_speeds_lie_on_the_1x_line():
+    """Friswell 5.9.1 rotor: each reported critical speed N has a forward mode at N/60 Hz (to the
+    interpolation error of the sweep), and tracked modes change smoothly between speeds."""
+    from spindlesim.analysis.campbell import solve_campbell
+    from tests.validation.test_friswell_examples import _rotor
+
+    rotor = _rotor("5.9.1", 0.0)
+    c = solve_campbell(rotor, np.linspace(0, 10000, 41), 6)
+    assert len(c.critical_speeds_rpm) >= 2
+    for n_crit in c.critical_speeds_rpm:
+        m = solve_modal(_rotor("5.9.1", n_crit), n_modes=6)
+        fwd = m.frequency_hz[np.array(m.whirl) == "forward"]
+        assert np.min(np.abs(fwd - n_crit / 60)) < 1e-3 * n_crit / 60
+    jumps = np.abs(np.diff(c.frequency_hz, axis=0)) / c.frequency_hz[:-1]
+    assert np.nanmax(jumps) < 0.05
+
+
+def test_campbell_skips_critically_damped_crossings(spindle):
+    """The default spindle's 16.8 Hz rigid-body mode has zeta 0.78 (AF 0.64 < 2.5, API 684)."""
+    from spindlesim.analysis.campbell import solve_campbell
+
+    c = solve_campbell(spindle, np.linspace(0, 3000, 7), 4)
+    assert c.frequency_hz[0, 0] < 20 and c.damping_ratio[0, 0] > 0.5
+    assert len(c.critical_speeds_rpm) == 0
