@@ -21,6 +21,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "campbell": ("campbell", "Campbell diagram with tracked modes and critical speeds."),
     "frf": ("frf", "Complex frequency response (receptance) between two DOFs."),
     "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
+    "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
     "run": ("run", "Every analysis the deck lists."),
 }
 

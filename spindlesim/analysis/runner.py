@@ -19,7 +19,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..deck.loader import LoadedDeck
+from ..deck.loader import LoadedDeck, require_rotor
 from ..model.build import build_rotor
 from ..output.hdf5 import RunInfo
 
@@ -62,6 +62,7 @@ def _range(r) -> np.ndarray:
 
 
 def _static(loaded, outdir, run, opts, progress):
+    require_rotor(loaded, "static")
     from ..output.rotor_plots import plot_static
     from ..output.rotor_writers import write_static
     from .static import solve_static
@@ -75,6 +76,7 @@ def _static(loaded, outdir, run, opts, progress):
 
 
 def _modal(loaded, outdir, run, opts, progress):
+    require_rotor(loaded, "modal")
     from ..output.rotor_plots import plot_modes
     from ..output.rotor_writers import write_modal
     from .modal import solve_modal
@@ -87,6 +89,7 @@ def _modal(loaded, outdir, run, opts, progress):
 
 
 def _campbell(loaded, outdir, run, opts, progress):
+    require_rotor(loaded, "campbell")
     from ..output.rotor_plots import plot_campbell
     from ..output.rotor_writers import write_campbell
     from .campbell import solve_campbell
@@ -100,6 +103,7 @@ def _campbell(loaded, outdir, run, opts, progress):
 
 
 def _frf(loaded, outdir, run, opts, progress):
+    require_rotor(loaded, "frf")
     from ..output.rotor_plots import plot_frf
     from ..output.rotor_writers import write_frf
     from .frf import solve_frf
@@ -113,6 +117,7 @@ def _frf(loaded, outdir, run, opts, progress):
 
 
 def _unbalance(loaded, outdir, run, opts, progress):
+    require_rotor(loaded, "unbalance")
     from ..output.rotor_plots import plot_unbalance
     from ..output.rotor_writers import write_unbalance
     from .frf import solve_unbalance
@@ -127,14 +132,26 @@ def _unbalance(loaded, outdir, run, opts, progress):
     return [write_unbalance(outdir / "unbalance.h5", run, res), plot_unbalance(res, outdir / "unbalance.png")]
 
 
-for _n, _f in (("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
+def _contact(loaded, outdir, run, opts, progress):
+    from ..contact.analysis import run_contact
+
+    return run_contact(loaded, outdir, run, opts, progress)
+
+
+for _n, _f in (("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
                ("unbalance", _unbalance)):
     register_analysis(_n, _f)
 
 
 def default_analyses(loaded: LoadedDeck) -> list[str]:
     """What ``spindlesim run`` does when the deck has no ``analyses`` list."""
-    names = ["static", "modal", "campbell", "frf"]
-    if loaded.deck.unbalance is not None:
-        names.append("unbalance")
+    d = loaded.deck
+    names = []
+    if d.shaft is not None and d.operating is not None:
+        names = ["static", "modal", "campbell", "frf"]
+        if d.unbalance is not None:
+            names.append("unbalance")
+    # sections contributed by other packages (contact, transient, ...) run when present
+    names += [n for n in _ANALYSES if n not in names and n not in ("static", "modal", "campbell", "frf", "unbalance")
+              and getattr(d, n, None) is not None]
     return names

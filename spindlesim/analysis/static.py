@@ -16,6 +16,10 @@ def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x"
     sysm = system_matrices(rotor, shaft, rotor.speed_rad_s)
     Q = load_vector(rotor, shaft)
     lu = sla.lu_factor(sysm.K, check_finite=True)
+    pivots = np.abs(np.diag(lu[0]))
+    if pivots.min() <= 1e-12 * pivots.max():
+        raise ValueError("the stiffness matrix is singular: the rotor is not held against rigid-body motion "
+                         "(check that the bearings support both x and y at two nodes, or one node with moment stiffness)")
     q = sla.lu_solve(lu, Q)
     dofs = rotor.dofs
     disp = np.stack([q[dofs.component("x")], q[dofs.component("y")]], axis=1)

@@ -24,10 +24,15 @@ def load_or_default(deck: Path | None, default_name: str):
     try:
         return load_deck(deck) if deck is not None else default_deck(default_name)
     except DeckError as exc:
-        for issue in exc.issues:
-            click.echo(str(issue), err=True)
-        click.echo(f"spindlesim: {len(exc.issues)} error(s) in the deck; nothing was written.", err=True)
-        sys.exit(2)
+        report_deck_error(exc)
+
+
+def report_deck_error(exc) -> None:
+    """Print every located deck issue and exit with code 2."""
+    for issue in exc.issues:
+        click.echo(str(issue), err=True)
+    click.echo(f"spindlesim: {len(exc.issues)} error(s) in the deck; nothing was written.", err=True)
+    sys.exit(2)
 
 
 def resolve_outdir(outdir: Path | None, loaded) -> Path:
@@ -59,12 +64,16 @@ def progress_reporter(label: str) -> tuple[Callable[[int, int], None], Callable[
 def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
     """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks."""
     from ..analysis.runner import run_analysis, run_info_for
+    from ..deck import DeckError
 
     loaded = load_or_default(deck, default_name)
     out = resolve_outdir(outdir, loaded)
     update, close = progress_reporter(name)
     try:
         paths = run_analysis(name, loaded, out, options, progress=update, run=run_info_for(loaded, " ".join(sys.argv)))
+    except DeckError as exc:
+        close()
+        report_deck_error(exc)
     except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
         close()
         click.echo(f"spindlesim {name}: {exc}", err=True)

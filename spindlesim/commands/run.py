@@ -13,6 +13,8 @@ def command(deck, outdir):
     import numpy as np
 
     from ..analysis.runner import default_analyses, run_analysis, run_info_for
+    from ..deck import DeckError
+    from .common import report_deck_error
 
     loaded = load_or_default(deck, "spindle")
     out = resolve_outdir(outdir, loaded)
@@ -22,6 +24,8 @@ def command(deck, outdir):
         try:
             for p in run_analysis(name, loaded, out, {}, run=run_info_for(loaded, " ".join(sys.argv))):
                 click.echo(str(p))
+        except DeckError as exc:
+            report_deck_error(exc)
         except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
             click.echo(f"spindlesim run: {name} failed: {exc}", err=True)
             failed.append(name)

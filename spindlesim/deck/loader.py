@@ -90,7 +90,8 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     """Checks pydantic cannot express: element rows, node ranges, analysis names."""
     bad: list[tuple[tuple[Any, ...], str]] = []
     names = ["outer_dia_mm", "inner_dia_mm", "length_mm", "density_kg_m3", "E_GPa", "G_GPa", "poisson"]
-    for i, row in enumerate(d.shaft.elements):
+    rows = d.shaft.elements if d.shaft is not None else []
+    for i, row in enumerate(rows):
         do, di, length, rho, e, g, nu, _ = row
         for j, val in enumerate(row[:7]):
             if names[j] == "inner_dia_mm":
@@ -103,9 +104,11 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
                 bad.append((("shaft", "elements", i, j), f"{names[j]} must be > 0, got {val}"))
         if di >= do and do > 0:
             bad.append((("shaft", "elements", i, 1), f"inner_dia_mm {di} must be smaller than outer_dia_mm {do}"))
-    n_nodes = len(d.shaft.elements) + 1
+    n_nodes = len(rows) + 1
 
     def node_ok(path: tuple[Any, ...], node: int) -> None:
+        if d.shaft is None:
+            return  # reported by require_rotor() when a rotor analysis runs
         if node > n_nodes:
             bad.append((path, f"node {node} is out of range: the shaft has nodes 1..{n_nodes}"))
 
@@ -147,6 +150,13 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
             if name not in available_analyses():
                 bad.append((("analyses", i), f"unknown analysis {name!r}; known: {', '.join(available_analyses())}"))
     return bad
+
+
+def require_rotor(loaded: LoadedDeck, analysis: str) -> None:
+    """Rotor analyses need ``shaft`` and ``operating``; raise a located DeckError otherwise."""
+    missing = [k for k in ("shaft", "operating") if getattr(loaded.deck, k) is None]
+    if missing:
+        raise DeckError([DeckIssue(loaded.source, 1, 1, k, f"required for the {analysis} analysis") for k in missing])
 
 
 def available_analyses() -> tuple[str, ...]:

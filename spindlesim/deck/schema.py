@@ -163,10 +163,10 @@ def deck_model() -> type[BaseModel]:
         "Deck",
         __base__=DeckModel,
         title=(str, "untitled"),
-        shaft=(Shaft, ...),
+        shaft=(Optional[Shaft], None),
         disks=(list[Disk], []),
         bearings=(list[bearing], []),  # type: ignore[valid-type]
-        operating=(Operating, ...),
+        operating=(Optional[Operating], None),
         loads=(list[PointLoad], []),
         analyses=(Optional[list[str]], None),
         static=(StaticSection, StaticSection()),

@@ -46,7 +46,7 @@ def test_default_deck_is_seed003_table1():
     ("title: ok", "title: ok\ntitle: again", "deck.yaml:2:1: title: duplicate key (first defined on line 1)"),
     ("speed_rpm: 2170", "speed_rpm: [2170", "deck.yaml:11:1: invalid YAML"),
     ("type: linear, K_N_m: [[412", "type: linearr, K_N_m: [[412", "deck.yaml:8:24: bearings[1].type:"),
-    ("operating:\n  speed_rpm: 2170\n", "", "deck.yaml:1:1: operating: required key is missing"),
+    ("  elements:\n", "  elemnts:\n", "deck.yaml:2:1: shaft.elements: required key is missing"),
     ("0.3, 0.0]\n    - [57.6", "0.3]\n    - [57.6", "deck.yaml:4:7: shaft.elements[0]: List should have at least 8 items"),
 ])
 def test_error_classes_are_located(old, new, expect):
@@ -68,3 +68,12 @@ def test_all_errors_collected_not_just_the_first():
 def test_empty_and_non_mapping_decks():
     assert errors("")[0] == "deck.yaml:1:1: the deck is empty"
     assert "must be a mapping" in errors("- 1\n- 2\n")[0]
+
+
+def test_rotor_analyses_require_shaft_and_operating():
+    from spindlesim.deck import require_rotor
+
+    loaded = parse_deck(GOOD.replace("operating:\n  speed_rpm: 2170\n", ""), "deck.yaml")
+    with pytest.raises(DeckError) as exc:
+        require_rotor(loaded, "modal")
+    assert str(exc.value.issues[0]) == "deck.yaml:1:1: operating: required for the modal analysis"
