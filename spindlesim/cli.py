@@ -23,6 +23,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
     "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
     "run": ("run", "Every analysis the deck lists."),
+    "sweep": ("sweep", "Parameter study over any deck value (process pool or Dask), resumable."),
 }
 
 

@@ -50,6 +50,14 @@ def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dic
     return _ANALYSES[name](loaded, Path(outdir), run, options or {}, progress)
 
 
+def _plots(opts: dict, make) -> list[Path]:
+    """PNG paths unless options say ``plots: False`` (sweeps skip per-case plots by default)."""
+    if not opts.get("plots", True):
+        return []
+    out = make()
+    return list(out) if isinstance(out, tuple) else [out]
+
+
 def _first(*values):
     """The first value that is not None (0 is a valid speed)."""
     return next((v for v in values if v is not None), None)
@@ -72,7 +80,8 @@ def _static(loaded, outdir, run, opts, progress):
     at = d.static.stiffness_at
     res = solve_static(rotor, at.node - 1, at.dof)
     log.info("static stiffness at node %d %s: %.4g N/um", at.node, at.dof, res.static_stiffness_N_m / 1e6)
-    return [write_static(outdir / "static.h5", run, res), plot_static(res, outdir / "static_deflection.png")]
+    return [write_static(outdir / "static.h5", run, res),
+            *_plots(opts, lambda: plot_static(res, outdir / "static_deflection.png"))]
 
 
 def _modal(loaded, outdir, run, opts, progress):
@@ -85,7 +94,7 @@ def _modal(loaded, outdir, run, opts, progress):
     speed = _first(opts.get("speed_rpm"), d.modal.speed_rpm)
     rotor = build_rotor(d, speed_rpm=speed)
     res = solve_modal(rotor, n_modes=_first(opts.get("modes"), d.modal.modes))
-    return [write_modal(outdir / "modal.h5", run, res), plot_modes(res, outdir / "modal_shapes.png")]
+    return [write_modal(outdir / "modal.h5", run, res), *_plots(opts, lambda: plot_modes(res, outdir / "modal_shapes.png"))]
 
 
 def _campbell(loaded, outdir, run, opts, progress):
@@ -99,7 +108,8 @@ def _campbell(loaded, outdir, run, opts, progress):
     speeds = _range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
     rotor = build_rotor(d)
     res = solve_campbell(rotor, speeds, n_modes=_first(opts.get("modes"), d.campbell.modes), progress=progress)
-    return [write_campbell(outdir / "campbell.h5", run, res), plot_campbell(res, outdir / "campbell.png")]
+    return [write_campbell(outdir / "campbell.h5", run, res),
+            *_plots(opts, lambda: plot_campbell(res, outdir / "campbell.png"))]
 
 
 def _frf(loaded, outdir, run, opts, progress):
@@ -113,7 +123,7 @@ def _frf(loaded, outdir, run, opts, progress):
     rotor = build_rotor(d, speed_rpm=_first(opts.get("speed_rpm"), fr.speed_rpm))
     res = solve_frf(rotor, _range(fr.frequencies_hz), fr.input.node, fr.input.dof, fr.output.node, fr.output.dof)
     return [write_frf(outdir / "frf.h5", run, res),
-            *plot_frf(res, outdir / "frf_magnitude_phase.png", outdir / "frf_real_imag.png")]
+            *_plots(opts, lambda: plot_frf(res, outdir / "frf_magnitude_phase.png", outdir / "frf_real_imag.png"))]
 
 
 def _unbalance(loaded, outdir, run, opts, progress):
@@ -129,7 +139,8 @@ def _unbalance(loaded, outdir, run, opts, progress):
     rotor = build_rotor(d)
     res = solve_unbalance(rotor, _range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
                           u.output.node, u.output.dof)
-    return [write_unbalance(outdir / "unbalance.h5", run, res), plot_unbalance(res, outdir / "unbalance.png")]
+    return [write_unbalance(outdir / "unbalance.h5", run, res),
+            *_plots(opts, lambda: plot_unbalance(res, outdir / "unbalance.png"))]
 
 
 def _contact(loaded, outdir, run, opts, progress):

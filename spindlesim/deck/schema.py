@@ -174,7 +174,27 @@ def deck_model() -> type[BaseModel]:
         campbell=(CampbellSection, CampbellSection()),
         frf=(FrfSection, FrfSection()),
         unbalance=(Optional[UnbalanceSection], None),
+        sweep=(Optional[SweepSection], None),
         **extra,
     )
     _deck_model_cache["deck"] = model
     return model
+
+
+class SweepSection(DeckModel):
+    """A parameter study (issue 7): ``spindlesim sweep DECK`` runs ``analysis`` for every case."""
+
+    analysis: str
+    mode: Literal["grid", "list"] = "grid"
+    # deck path -> list of values, or {start, stop, count}
+    parameters: Annotated[dict[str, Union["SweepRange", Annotated[list[Any], Field(min_length=1)]]],
+                          Field(min_length=1)]
+
+
+class SweepRange(DeckModel):
+    start: float
+    stop: float
+    count: Annotated[int, Field(ge=1, le=100_000)]
+
+
+SweepSection.model_rebuild()

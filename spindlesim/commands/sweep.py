@@ -1,0 +1,83 @@
+"""``spindlesim sweep DECK``: a parameter study over any deck value, on a process pool or Dask."""
+
+import sys
+
+import click
+
+from .common import deck_argument, load_or_default, resolve_outdir
+
+
+@click.command("sweep")
+@deck_argument
+@click.option("-o", "--outdir", type=click.Path(file_okay=False), default=None,
+              help="Sweep directory [default: out/<deck stem>/sweep].")
+@click.option("--analysis", default=None, help="Analysis run for every case [default: deck sweep.analysis].")
+@click.option("--set", "sets", multiple=True, metavar="PATH=VALUES",
+              help="Override a deck value: 'bearings.front.K_N_m.0.0=1e8,2e8' or 'operating.speed_rpm=1000:6000:11'.")
+@click.option("--mode", type=click.Choice(["grid", "list"]), default=None,
+              help="grid: every combination; list: the i-th values together [default: deck, grid].")
+@click.option("--workers", type=click.IntRange(min=1), default=None, help="Parallel workers [default: all cores].")
+@click.option("--scheduler", default=None, metavar="ADDRESS|local",
+              help="Run on a Dask cluster: a scheduler address, or 'local' for a LocalCluster.")
+@click.option("--case-plots/--no-case-plots", default=False, help="Also write each case's PNGs [default: off].")
+def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
+    """Run ANALYSIS for every case of a parameter study; resumable, one HDF5 per case plus sweep.h5."""
+    from pathlib import Path
+
+    from ..analysis.runner import analyses, run_info_for
+    from ..deck import DeckError, parse_deck
+    from ..sweep import build_cases, parse_set_option, run_sweep
+    from ..sweep.cases import parse_values
+    from ..sweep.report import plot_overlay, plot_scalars, write_summary
+    from .common import report_deck_error
+
+    loaded = load_or_default(deck, "spindle")
+    sw = loaded.deck.sweep
+    params: dict = {}
+    if sw is not None:
+        for path, spec in sw.parameters.items():
+            params[path] = list(spec) if isinstance(spec, list) else parse_values(f"{spec.start}:{spec.stop}:{spec.count}")
+    try:
+        for s in sets:
+            path, values = parse_set_option(s)
+            params[path] = values
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="--set") from None
+    analysis = analysis or (sw.analysis if sw is not None else None)
+    if analysis is None or analysis not in analyses():
+        raise click.BadParameter(f"give an analysis, one of {', '.join(analyses())}", param_hint="--analysis")
+    if not params:
+        raise click.UsageError("nothing to sweep: give --set PATH=VALUES or a 'sweep:' section in the deck")
+    try:
+        cases = build_cases(loaded.text, params, analysis, mode or (sw.mode if sw else "grid"),
+                            options={"plots": case_plots})
+    except (KeyError, ValueError) as exc:
+        click.echo(f"spindlesim sweep: {exc.args[0] if exc.args else exc}", err=True)
+        sys.exit(2)
+    bad = []
+    for c in cases:  # validate every case before running any
+        try:
+            parse_deck(c.deck_text, f"{loaded.source} [case {c.index}: {c.parameters}]")
+        except DeckError as exc:
+            bad.extend(exc.issues)
+    if bad:
+        report_deck_error(DeckError(bad))
+    out = Path(outdir) if outdir else resolve_outdir(None, loaded) / "sweep"
+
+    def progress(done, total, eta):
+        click.echo(f"sweep: {done}/{total} cases, about {eta:.0f} s left", err=True)
+
+    click.echo(f"sweep: {len(cases)} cases of {analysis} into {out}", err=True)
+    res = run_sweep(cases, out, workers=workers, scheduler=scheduler, progress=progress)
+    run = run_info_for(loaded, " ".join(sys.argv))
+    paths = [write_summary(res, run, analysis), plot_scalars(res, out / "sweep_scalars.png"),
+             plot_overlay(res, analysis, out / f"sweep_{analysis}_overlay.png")]
+    for p in paths:
+        if p is not None:
+            click.echo(str(p))
+    failed = [r for r in res.records if r.get("status") != "done"]
+    click.echo(f"sweep: {len(res.ran)} run, {len(res.skipped)} already finished, {len(failed)} failed", err=True)
+    for r in failed:
+        click.echo(f"  case {r.get('index')} {r.get('parameters')}: {r.get('error', '').splitlines()[0]}", err=True)
+    if failed:
+        sys.exit(1)
