@@ -45,7 +45,7 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     prev_freq = None
     for i, s in enumerate(speeds):
         sysm = system_matrices(rotor, shaft, s * np.pi / 30)
-        m = modal_from_matrices(sysm, rotor.n_nodes, rotor.node_z_m, n_modes + extra, s)
+        m = modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes + extra, s)
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
         if prev_shapes is None:
             take = np.arange(min(n_track, len(m.frequency_hz)))

@@ -17,6 +17,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from ..fe.assembly import SystemMatrices, assemble_shaft, system_matrices
+from ..model.dofs import DOFS_4
 from ..model.rotor import Rotor
 from ..results import ModalResult
 
@@ -49,8 +50,11 @@ def whirl_of(shape_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[str, float]
     return "mixed", share
 
 
-def modal_from_matrices(sysm: SystemMatrices, n_nodes: int, node_z_m: np.ndarray, n_modes: int,
+def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_modes: int,
                         speed_rpm: float) -> ModalResult:
+    """Modes of assembled matrices; ``dofs`` is the rotor's DofMap (mode shapes keep x, y, theta_x, theta_y)."""
+    n_nodes = dofs.n_nodes
+    lateral = [dofs.names.index(d) for d in DOFS_4]
     A = state_matrix(sysm)
     lam, vec = sla.eig(A, check_finite=False, overwrite_a=True)
     n = sysm.size
@@ -61,7 +65,7 @@ def modal_from_matrices(sysm: SystemMatrices, n_nodes: int, node_z_m: np.ndarray
     osc = (~rigid) & (~real) & (lam.imag > 0)
     order = np.flatnonzero(osc)[np.argsort(lam.imag[osc])][:n_modes]
     lam_m = lam[order]
-    shapes = vec[:n, order].T.reshape(len(order), n_nodes, -1)[:, :, :4]
+    shapes = vec[:n, order].T.reshape(len(order), n_nodes, -1)[:, :, lateral]
     # normalise: largest translation becomes 1 + 0j
     trans = shapes[:, :, :2].reshape(len(order), -1)
     ref = trans[np.arange(len(order)), np.argmax(np.abs(trans), axis=1)]
@@ -82,4 +86,4 @@ def solve_modal(rotor: Rotor, speed_rpm: float | None = None, n_modes: int = 8, 
     speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
     shaft = assemble_shaft(rotor) if shaft is None else shaft
     sysm = system_matrices(rotor, shaft, speed * np.pi / 30)
-    return modal_from_matrices(sysm, rotor.n_nodes, rotor.node_z_m, n_modes, speed)
+    return modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes, speed)

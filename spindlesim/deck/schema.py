@@ -80,6 +80,7 @@ class PointLoad(DeckModel):
     node: NodeNumber
     fx_N: float = 0.0
     fy_N: float = 0.0
+    fz_N: float = 0.0  # axial; adds the axial DOF to the model
     mx_Nm: float = 0.0
     my_Nm: float = 0.0
 

@@ -74,6 +74,14 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
     M, G, KB, KA, KC = (glob(m) for m in (em.mass, em.gyroscopic, em.stiffness_bending, em.stiffness_axial, em.circulatory))
     grav = np.zeros(n)
     np.add.at(grav, rows[:, :, 0], em.gravity_unit)
+    if "z" in dofs.names:  # axial bar: K = EA/L [[1,-1],[-1,1]], M = rho A L/6 [[2,1],[1,2]] (consistent)
+        ea_l = el.youngs_modulus_Pa * el.area_m2 / el.length_m
+        m6 = el.density_kg_m3 * el.area_m2 * el.length_m / 6
+        for e in range(el.count):
+            i, j = dofs.index(e, "z"), dofs.index(e + 1, "z")
+            ij = np.ix_([i, j], [i, j])
+            KB[ij] += ea_l[e] * np.array([[1.0, -1.0], [-1.0, 1.0]])
+            M[ij] += m6[e] * np.array([[2.0, 1.0], [1.0, 2.0]])
     for disk in rotor.disks:
         ix, iy, itx, ity = dofs.lateral(disk.node)
         M[ix, ix] += disk.mass_kg
@@ -84,6 +92,8 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
         G[itx, ity] += disk.polar_inertia_kg_m2
         G[ity, itx] -= disk.polar_inertia_kg_m2
         grav[iy] -= disk.mass_kg
+        if "z" in dofs.names:
+            M[dofs.index(disk.node, "z"), dofs.index(disk.node, "z")] += disk.mass_kg
     return ShaftMatrices(M=M, G=G, K_B=KB, K_A=KA, K_C=KC, gravity_unit=grav,
                          eta_v=el.viscous_damping_s, eta_h=el.hysteretic_loss_factor)
 
@@ -97,7 +107,9 @@ def add_bearings(
     for b in rotor.bearings:
         load = None if static_loads is None else static_loads.get(b.name)
         kb, cb = b.linearized(speed_rad_s, load)
-        i = rotor.dofs.lateral(b.node)[:2]
+        # a bearing acts on (x, y) unless it names its DOFs, e.g. ("x", "y", "z", "theta_x", "theta_y")
+        names = getattr(b, "dof_names", ("x", "y"))
+        i = np.array([rotor.dofs.index(b.node, d) for d in names])
         K[np.ix_(i, i)] += kb
         C[np.ix_(i, i)] += cb
     return K, C
@@ -128,4 +140,6 @@ def load_vector(rotor: Rotor, shaft: ShaftMatrices) -> np.ndarray:
     Q = Q.copy()
     for load in rotor.loads:
         Q[rotor.dofs.lateral(load.node)] += np.asarray(load.force_N)
+        if load.axial_N:
+            Q[rotor.dofs.index(load.node, "z")] += load.axial_N
     return Q

@@ -7,6 +7,7 @@ from typing import Any, Callable
 import numpy as np
 
 from ..bearings.linear import LinearBearing
+from .dofs import DOFS_4, DOFS_5, DofMap
 from .rotor import Disk, NodalLoad, Rotor, ShaftElements
 from .shear import cowper_hollow_circle
 
@@ -55,9 +56,12 @@ def build_rotor(deck: Any, speed_rpm: float | None = None) -> Rotor:
     disks = tuple(Disk(d.node - 1, d.mass_kg, d.Ip_kg_m2, d.Id_kg_m2, d.name or f"disk{i + 1}")
                   for i, d in enumerate(deck.disks))
     bearings = tuple(_BEARING_BUILDERS[b.type](b, deck) for b in deck.bearings)
-    loads = tuple(NodalLoad(p.node - 1, (p.fx_N, p.fy_N, p.mx_Nm, p.my_Nm)) for p in deck.loads)
+    loads = tuple(NodalLoad(p.node - 1, (p.fx_N, p.fy_N, p.mx_Nm, p.my_Nm), p.fz_N) for p in deck.loads)
     op = deck.operating
+    # 5 DOF per node (axial z added) when a bearing acts axially (seed 001's DTRB) or an axial load is given
+    axial = any("z" in getattr(b, "dof_names", ()) for b in bearings) or any(p.fz_N for p in deck.loads)
     return Rotor(
+        dofs=DofMap(len(z), DOFS_5 if axial else DOFS_4),
         node_z_m=z, elements=el, disks=disks, bearings=bearings, loads=loads,
         speed_rpm=op.speed_rpm if speed_rpm is None else speed_rpm,
         gravity_m_s2=op.g_m_s2 if op.gravity else 0.0,

@@ -51,6 +51,7 @@ class Disk:
 class NodalLoad:
     node: int
     force_N: tuple[float, float, float, float]  # fx, fy, mx, my
+    axial_N: float = 0.0  # fz, used when the model has the axial DOF
 
 
 @dataclass(frozen=True)
