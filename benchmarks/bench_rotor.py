@@ -35,7 +35,7 @@ def best(fn, repeat):
 
 
 def main() -> list[tuple[str, float, float, float]]:
-    rotor = build_rotor(default_deck().deck)
+    rotor = build_rotor(default_deck("spindle_linear").deck)
     speeds = np.linspace(0, 12000, 50)
     freqs = np.linspace(10, 5000, 1000)
     rows = [

@@ -21,6 +21,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "campbell": ("campbell", "Campbell diagram with tracked modes and critical speeds."),
     "frf": ("frf", "Complex frequency response (receptance) between two DOFs."),
     "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
+    "thermal": ("thermal", "Thermal equilibrium of fluid-film bearings (seed 003 eqs. 4-14)."),
+    "coefficients": ("coefficients", "Fluid-film bearing stiffness and damping at thermal equilibrium."),
     "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
     "run": ("run", "Every analysis the deck lists."),
     "sweep": ("sweep", "Parameter study over any deck value (process pool or Dask), resumable."),

@@ -149,7 +149,19 @@ def _contact(loaded, outdir, run, opts, progress):
     return run_contact(loaded, outdir, run, opts, progress)
 
 
-for _n, _f in (("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
+def _thermal(loaded, outdir, run, opts, progress):
+    from ..bearings.fluidfilm.runner import run_thermal
+
+    return run_thermal(loaded, outdir, run, opts, progress)
+
+
+def _coefficients(loaded, outdir, run, opts, progress):
+    from ..bearings.fluidfilm.runner import run_coefficients
+
+    return run_coefficients(loaded, outdir, run, opts, progress)
+
+
+for _n, _f in (("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
                ("unbalance", _unbalance)):
     register_analysis(_n, _f)
 
@@ -162,6 +174,8 @@ def default_analyses(loaded: LoadedDeck) -> list[str]:
         names = ["static", "modal", "campbell", "frf"]
         if d.unbalance is not None:
             names.append("unbalance")
+    if any(getattr(b, "type", "") in ("three_lobe", "plain", "multilobe") for b in d.bearings):
+        names[:0] = ["thermal", "coefficients"]
     # sections contributed by other packages (contact, transient, ...) run when present
     names += [n for n in _ANALYSES if n not in names and n not in ("static", "modal", "campbell", "frf", "unbalance")
               and getattr(d, n, None) is not None]

@@ -7,7 +7,7 @@ import warnings
 import numpy as np
 import scipy.linalg as sla
 
-from ..fe.assembly import assemble_shaft, load_vector, system_matrices
+from ..fe.assembly import assemble_shaft, bearing_static_loads, load_vector, system_matrices
 from ..model.rotor import Rotor
 from ..results import StaticResult
 
@@ -15,7 +15,8 @@ from ..results import StaticResult
 def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x") -> StaticResult:
     """Solve K q = Q at the rotor's speed; bearing reactions R_b = -K_b q_b."""
     shaft = assemble_shaft(rotor)
-    sysm = system_matrices(rotor, shaft, rotor.speed_rad_s)
+    loads = bearing_static_loads(rotor, shaft)
+    sysm = system_matrices(rotor, shaft, rotor.speed_rad_s, loads)
     Q = load_vector(rotor, shaft)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", sla.LinAlgWarning)  # singularity is checked and reported below
@@ -30,7 +31,7 @@ def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x"
     slope = np.stack([q[dofs.component("theta_x")], q[dofs.component("theta_y")]], axis=1)
     forces = []
     for b in rotor.bearings:
-        kb, _ = b.linearized(rotor.speed_rad_s, None)
+        kb, _ = b.linearized(rotor.speed_rad_s, None if loads is None else loads.get(b.name))
         forces.append(-kb @ disp[b.node])
     applied = np.array([Q[dofs.component("x")].sum(), Q[dofs.component("y")].sum()])
     e = np.zeros(dofs.size)

@@ -129,7 +129,30 @@ class SystemMatrices:
         return self.M.shape[0]
 
 
+def bearing_static_loads(rotor: Rotor, shaft: ShaftMatrices) -> dict | None:
+    """(x, y) force of the shaft on each bearing from the static loads, for bearings without a load
+    of their own (``load_N is None``). The rotor is solved on stiff isotropic supports at the
+    bearing nodes: exact for two bearings (statically determinate), the rigid-support
+    distribution for more."""
+    if not any(getattr(b, "load_N", 0.0) is None for b in rotor.bearings):
+        return None
+    K = shaft.stiffness(0.0).copy()
+    k_stiff = 1e3 * max(np.max(np.abs(np.diag(K))), 1.0)
+    for b in rotor.bearings:
+        for d in getattr(b, "dof_names", ("x", "y"))[:2]:
+            i = rotor.dofs.index(b.node, d)
+            K[i, i] += k_stiff
+    q = np.linalg.solve(K, load_vector(rotor, shaft))
+    loads = {}
+    for b in rotor.bearings:
+        i = [rotor.dofs.index(b.node, d) for d in ("x", "y")]
+        loads[b.name] = k_stiff * q[i]
+    return loads
+
+
 def system_matrices(rotor: Rotor, shaft: ShaftMatrices, speed_rad_s: float, static_loads: dict | None = None) -> SystemMatrices:
+    if static_loads is None:
+        static_loads = bearing_static_loads(rotor, shaft)
     K, C = add_bearings(rotor, shaft.stiffness(speed_rad_s), shaft.damping(speed_rad_s), speed_rad_s, static_loads)
     return SystemMatrices(M=shaft.M, C=C, K=K, speed_rad_s=speed_rad_s)
 

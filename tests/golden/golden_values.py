@@ -11,7 +11,7 @@ from spindlesim.model.build import build_rotor
 
 
 def compute() -> dict:
-    rotor = build_rotor(default_deck().deck)
+    rotor = build_rotor(default_deck("spindle_linear").deck)
     st = solve_static(rotor)
     md = solve_modal(rotor, n_modes=8)
     cb = solve_campbell(rotor, np.linspace(0, 12000, 7), n_modes=6)
@@ -28,4 +28,17 @@ def compute() -> dict:
         "frf_abs_m_N": np.abs(fr.receptance_m_N).tolist(),
         "frf_phase_rad": np.angle(fr.receptance_m_N).tolist(),
         "unbalance_abs_m": np.abs(ub.response_m[:, 0, 0]).tolist(),
+    }
+
+
+def compute_three_lobe() -> dict:
+    """The embedded default deck: seed 003 spindle on two 3-lobe bearings at thermal equilibrium."""
+    rotor = build_rotor(default_deck("spindle").deck)
+    md = solve_modal(rotor, n_modes=6)
+    k_front, c_front = rotor.bearings[0].linearized(rotor.speed_rad_s)
+    return {
+        "three_lobe_modal_frequency_hz": md.frequency_hz.tolist(),
+        "three_lobe_modal_damping_ratio": md.damping_ratio.tolist(),
+        "three_lobe_front_K_N_m": k_front.ravel().tolist(),
+        "three_lobe_front_C_Ns_m": c_front.ravel().tolist(),
     }

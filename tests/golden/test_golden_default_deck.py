@@ -7,14 +7,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.golden.golden_values import compute
+from tests.golden.golden_values import compute, compute_three_lobe
 
 GOLDEN = json.loads(Path(__file__).with_name("default_spindle.json").read_text())
 
 
 @pytest.fixture(scope="module")
 def now():
-    return compute()
+    return {**compute(), **compute_three_lobe()}
 
 
 @pytest.mark.parametrize("key", sorted(GOLDEN))
@@ -25,4 +25,6 @@ def test_matches_golden(now, key):
         np.testing.assert_allclose(now[key], GOLDEN[key], atol=1e-6)
     else:
         scale = np.max(np.abs(GOLDEN[key]))
-        np.testing.assert_allclose(now[key], GOLDEN[key], rtol=1e-6, atol=1e-9 * scale)
+        # the fluid-film values pass through iterative solvers (equilibrium, thermal root): looser
+        rtol = 1e-5 if key.startswith("three_lobe") else 1e-6
+        np.testing.assert_allclose(now[key], GOLDEN[key], rtol=rtol, atol=1e-9 * scale)

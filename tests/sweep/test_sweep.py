@@ -6,6 +6,7 @@ import signal
 import subprocess
 import sys
 import time
+from importlib import resources
 
 import h5py
 import numpy as np
@@ -17,7 +18,8 @@ from spindlesim.deck import default_deck, parse_deck
 from spindlesim.sweep import build_cases, parse_set_option, run_sweep
 from spindlesim.sweep.cases import parse_values
 
-DECK = default_deck().text
+DECK = default_deck("spindle_linear").text
+LINEAR_DECK = str(resources.files("spindlesim.decks") / "spindle_linear.yaml")
 
 
 def test_values_and_ranges():
@@ -73,7 +75,7 @@ def test_resume_runs_only_missing_cases(tmp_path):
 
 def test_killed_sweep_completes_only_missing_cases_on_rerun(tmp_path):
     out = tmp_path / "sw"
-    cmd = [sys.executable, "-m", "spindlesim", "sweep", "--analysis", "modal", "--workers", "1",
+    cmd = [sys.executable, "-m", "spindlesim", "sweep", LINEAR_DECK, "--analysis", "modal", "--workers", "1",
            "--set", "operating.speed_rpm=0:10000:6", "--case-plots", "-o", str(out)]
     proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     deadline = time.time() + 120
@@ -95,7 +97,7 @@ def test_killed_sweep_completes_only_missing_cases_on_rerun(tmp_path):
 
 
 def test_failing_case_is_recorded_and_others_finish(tmp_path):
-    res = CliRunner().invoke(main, ["sweep", "--analysis", "static", "--workers", "1", "--mode", "list",
+    res = CliRunner().invoke(main, ["sweep", LINEAR_DECK, "--analysis", "static", "--workers", "1", "--mode", "list",
                                     "--set", "bearings.front.K_N_m=[[0,0],[0,0]],[[1.0e8,0],[0,1.0e8]]",
                                     "--set", "bearings.rear.K_N_m=[[0,0],[0,0]],[[1.0e8,0],[0,1.0e8]]",
                                     "-o", str(tmp_path)])

@@ -28,10 +28,12 @@ def test_good_deck_and_yaml12_floats():
     assert d.bearings[1].K_N_m[0][0] == 412.62e6  # "412.62e6" is a float, as in YAML 1.2
 
 
-def test_default_deck_is_seed003_table1():
-    d = default_deck().deck
+@pytest.mark.parametrize("name,btype", [("spindle", "three_lobe"), ("spindle_linear", "linear")])
+def test_default_decks_are_seed003_table1(name, btype):
+    d = default_deck(name).deck
     assert len(d.shaft.elements) == 25
     assert [b.node for b in d.bearings] == [7, 18]
+    assert {b.type for b in d.bearings} == {btype}
     assert d.operating.speed_rpm == 2170
 
 
@@ -45,7 +47,8 @@ def test_default_deck_is_seed003_table1():
     ("name: b, node: 3", "name: b, node: 4", "deck.yaml:8:15: bearings[1].node: node 4 is out of range: the shaft has nodes 1..3"),
     ("title: ok", "title: ok\ntitle: again", "deck.yaml:2:1: title: duplicate key (first defined on line 1)"),
     ("speed_rpm: 2170", "speed_rpm: [2170", "deck.yaml:11:1: invalid YAML"),
-    ("type: linear, K_N_m: [[412", "type: linearr, K_N_m: [[412", "deck.yaml:8:24: bearings[1].type:"),
+    ("type: linear, K_N_m: [[412", "type: linearr, K_N_m: [[412",
+     "deck.yaml:8:5: bearings[1]: unknown type; expected one of linear, plain, three_lobe"),
     ("  elements:\n", "  elemnts:\n", "deck.yaml:2:1: shaft.elements: required key is missing"),
     ("0.3, 0.0]\n    - [57.6", "0.3]\n    - [57.6", "deck.yaml:4:7: shaft.elements[0]: List should have at least 8 items"),
 ])

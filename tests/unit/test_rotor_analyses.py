@@ -15,7 +15,7 @@ from tests.rotor_helpers import disk_entry, isotropic_bearing, rotor_from, unifo
 
 @pytest.fixture(scope="module")
 def spindle():
-    return build_rotor(default_deck().deck)
+    return build_rotor(default_deck("spindle_linear").deck)
 
 
 def test_static_equilibrium_and_reactions(spindle):

@@ -13,11 +13,17 @@ Layers (each usable on its own):
 - :mod:`bearing`      :class:`FluidFilmBearing` implementing the linearised bearing protocol
 """
 
+from spindlesim.bearings.fluidfilm.bearing import FluidFilmBearing
 from spindlesim.bearings.fluidfilm.geometry import (
     BearingGeometry,
     Land,
     multilobe_geometry,
     plain_geometry,
 )
+from spindlesim.bearings.fluidfilm.thermal import ThermalEquilibriumError, ThermalParameters
+from spindlesim.bearings.fluidfilm.viscosity import ConstantViscosity, WaltherViscosity
 
-__all__ = ["BearingGeometry", "Land", "multilobe_geometry", "plain_geometry"]
+__all__ = [
+    "BearingGeometry", "ConstantViscosity", "FluidFilmBearing", "Land", "ThermalEquilibriumError",
+    "ThermalParameters", "WaltherViscosity", "multilobe_geometry", "plain_geometry",
+]

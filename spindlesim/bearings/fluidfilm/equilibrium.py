@@ -38,6 +38,11 @@ class Equilibrium:
     X: float  # e_x / Cb
     Y: float  # e_y / Cb
     iterations: int
+    #: rotation from the grid frame of ``film.pressure`` to the x, y frame (axisymmetric
+    #: bearings are solved in the line-of-centres frame)
+    rotation_rad: float = 0.0
+    #: full-film set on the solver's grid (warm start of a neighbouring state)
+    grid_full_film: np.ndarray | None = None
 
 
 def _rot(psi: float) -> np.ndarray:
@@ -46,7 +51,8 @@ def _rot(psi: float) -> np.ndarray:
 
 
 def solve_axisymmetric(solver: ReynoldsSolver, target: np.ndarray, tol: float = 1e-9,
-                       max_iter: int = 60) -> Equilibrium:
+                       max_iter: int = 60, initial_eps: float | None = None,
+                       full_film_guess: np.ndarray | None = None) -> Equilibrium:
     """Equilibrium of a 360 deg plain bearing whose film starts at the maximum film.
 
     ``solver`` must be built on a single land starting at theta = pi (the maximum film
@@ -57,8 +63,8 @@ def solve_axisymmetric(solver: ReynoldsSolver, target: np.ndarray, tol: float = 
     if fmag <= 0:
         raise EquilibriumError("zero load: the centred journal carries no load")
     lo, hi = 0.0, 1.0
-    eps = 0.5
-    guess = None
+    eps = 0.5 if initial_eps is None or not 0.0 < initial_eps < 1.0 else initial_eps
+    guess = full_film_guess
     sol = None
     for it in range(1, max_iter + 1):
         try:
@@ -95,11 +101,13 @@ def solve_axisymmetric(solver: ReynoldsSolver, target: np.ndarray, tol: float = 
                    jac_position=Rm @ sol.jac_position @ Rm.T,
                    jac_velocity=Rm @ sol.jac_velocity @ Rm.T)
     log.debug("axisymmetric equilibrium eps=%.6f in %d iterations", eps, it)
-    return Equilibrium(film=film, X=float(pos[0]), Y=float(pos[1]), iterations=it)
+    return Equilibrium(film=film, X=float(pos[0]), Y=float(pos[1]), iterations=it,
+                       rotation_rad=psi, grid_full_film=sol.full_film)
 
 
 def solve_newton(solver: ReynoldsSolver, target: np.ndarray, initial=(0.0, 0.0),
-                 tol: float = 1e-9, max_iter: int = 60) -> Equilibrium:
+                 tol: float = 1e-9, max_iter: int = 60,
+                 full_film_guess: np.ndarray | None = None) -> Equilibrium:
     """Newton iteration on the journal position for ``f(X, Y) = target``."""
     fmag = float(np.hypot(*target))
     if fmag <= 0:
@@ -109,7 +117,7 @@ def solve_newton(solver: ReynoldsSolver, target: np.ndarray, initial=(0.0, 0.0),
         # start slightly displaced along the load (the journal moves towards the load
         # direction, which is opposite to the film force on it)
         x = -0.05 * target / fmag
-    sol = solver.solve(x[0], x[1])
+    sol = solver.solve(x[0], x[1], full_film_guess)
     guess = sol.full_film
     res = sol.force - target
     for it in range(1, max_iter + 1):
@@ -147,4 +155,5 @@ def solve_newton(solver: ReynoldsSolver, target: np.ndarray, initial=(0.0, 0.0),
     if sol.min_film < 1e-3:
         raise EquilibriumError("load too large: minimum film below 0.1 % of Cb")
     log.debug("Newton equilibrium X=%.6f Y=%.6f in %d iterations", x[0], x[1], it)
-    return Equilibrium(film=sol, X=float(x[0]), Y=float(x[1]), iterations=it)
+    return Equilibrium(film=sol, X=float(x[0]), Y=float(x[1]), iterations=it,
+                       grid_full_film=sol.full_film)

@@ -69,6 +69,12 @@ class BearingGeometry:
             raise ValueError("the lands cover more than 360 deg")
 
     @property
+    def axisymmetric(self) -> bool:
+        """True for a 360 deg plain bore (solved in the line-of-centres frame)."""
+        return (self.preload == 0.0 and len(self.lands) == 1
+                and abs(self.lands[0].arc_rad - 2 * math.pi) < 1e-12)
+
+    @property
     def radius_m(self) -> float:
         return 0.5 * self.diameter_m
 
@@ -102,8 +108,16 @@ def plain_geometry(
     groove_width_deg: float = 20.0,
     groove_centre_deg: float | None = None,
     load_angle_deg: float = -90.0,
+    feed: str = "max_film",
 ) -> BearingGeometry:
     """A plain cylindrical bearing, 360 deg (``grooves=0``) or with axial grooves.
+
+    A 360 deg bearing is axisymmetric and is solved in the line-of-centres frame, in
+    which this geometry is defined (journal displaced along +x).  ``feed="max_film"``
+    (default) starts the film at the maximum film thickness with P = 0 there, the
+    boundary condition of Raimondi & Boyd (1958); ``feed="periodic"`` closes the film
+    on itself (pure Swift-Stieber on the whole circle, attitude angles a few degrees
+    larger at low eccentricity).
 
     Grooves are equally spaced; by default the first groove is centred 90 deg from
     the load line (DESIGN.md section 4: grooves "centred by default 90 deg from the
@@ -113,7 +127,12 @@ def plain_geometry(
     if grooves < 0:
         raise ValueError("grooves must be >= 0")
     if grooves == 0:
-        land = Land(start_rad=0.0, arc_rad=2 * math.pi, periodic=True)
+        if feed == "max_film":
+            land = Land(start_rad=math.pi, arc_rad=2 * math.pi)
+        elif feed == "periodic":
+            land = Land(start_rad=0.0, arc_rad=2 * math.pi, periodic=True)
+        else:
+            raise ValueError("feed must be 'max_film' or 'periodic'")
         return BearingGeometry(diameter_m, width_m, clearance_m, 0.0, (land,), "plain")
     if not 0 < groove_width_deg * grooves < 360:
         raise ValueError("grooves cover the whole circumference")
@@ -139,7 +158,7 @@ def multilobe_geometry(
     groove_width_deg: float = 20.0,
     offset: float = 0.5,
     load_angle_deg: float = -90.0,
-    orientation: str = "between_lobes",
+    orientation: str = "on_lobe",
     first_lobe_centre_deg: float | None = None,
 ) -> BearingGeometry:
     """A multilobe bearing with ``lobes`` equal lobes separated by axial grooves.

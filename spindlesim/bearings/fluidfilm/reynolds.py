@@ -36,6 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
+from scipy.linalg import cho_solve_banded, cholesky_banded
 
 from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
 
@@ -43,8 +44,8 @@ log = logging.getLogger(__name__)
 
 #: Default grid, chosen by the grid-convergence study (docs/parts/validation_fluidfilm.md):
 #: intervals per 360 deg of circumference and across the half width.
-DEFAULT_CIRCUMFERENTIAL = 144
-DEFAULT_AXIAL = 10
+DEFAULT_CIRCUMFERENTIAL = 192
+DEFAULT_AXIAL = 12
 
 
 class ReynoldsError(RuntimeError):
@@ -224,6 +225,8 @@ class ReynoldsSolver:
         rows = np.concatenate([cl[both_c], cr[both_c], lo[both_a], hi[both_a], np.arange(n)])
         cols = np.concatenate([cr[both_c], cl[both_c], hi[both_a], lo[both_a], np.arange(n)])
         self._rows, self._cols = rows, cols
+        self._off_l = np.concatenate([cl, lo])
+        self._off_r = np.concatenate([cr, hi])
         self._cos_n, self._sin_n = np.cos(g.node_theta), np.sin(g.node_theta)
         self._cos_cf, self._sin_cf = np.cos(g.cf_theta), np.sin(g.cf_theta)
         self._cos_af, self._sin_af = np.cos(g.af_theta), np.sin(g.af_theta)
@@ -276,10 +279,68 @@ class ReynoldsSolver:
             out -= np.bincount(right[m], weights=d[m], minlength=n)
         return out
 
+    def _diagonal(self, gc: np.ndarray, ga: np.ndarray) -> np.ndarray:
+        g = self.grid
+        n = g.n_unknown
+        diag = np.zeros(n)
+        for idx, val in ((g.cf_left, gc), (g.cf_right, gc), (g.af_low, ga), (g.af_high, ga)):
+            m = idx >= 0
+            diag += np.bincount(idx[m], weights=val[m], minlength=n)
+        return diag
+
+    def _factor(self, gc: np.ndarray, ga: np.ndarray, diag: np.ndarray, inactive: np.ndarray):
+        """Factorise A restricted to the full-film set; returns a solve function.
+
+        Unknowns are numbered circumferential-major, so the restricted matrix is banded
+        (half bandwidth <= axial nodes) and a banded Cholesky factorisation is used; a
+        periodic (groove-less) land couples its first and last columns and falls back to
+        a sparse LU.
+        """
+        g = self.grid
+        n = g.n_unknown
+        idx = np.flatnonzero(inactive)
+        m = idx.size
+        mp = np.full(n + 1, -1, dtype=np.int64)  # mp[-1] (Dirichlet) stays -1
+        mp[idx] = np.arange(m)
+        li, ri = mp[self._off_l], mp[self._off_r]
+        ok = (li >= 0) & (ri >= 0)
+        i, j = np.minimum(li, ri)[ok], np.maximum(li, ri)[ok]
+        v = -np.concatenate([gc, ga])[ok]
+        u = int((j - i).max()) if j.size else 0
+        if u <= 4 * g.n_axial:
+            ab = np.zeros((u + 1, m))
+            ab[u, :] = diag[idx]
+            ab[u + i - j, j] = v
+            cb = cholesky_banded(ab, lower=False, check_finite=False)
+            return lambda rhs: cho_solve_banded((cb, False), rhs, check_finite=False)
+        A = sp.csc_matrix((np.concatenate([v, v, diag[idx]]),
+                           (np.concatenate([i, j, np.arange(m)]),
+                            np.concatenate([j, i, np.arange(m)]))), shape=(m, m))
+        return spla.splu(A).solve
+
+    def _system(self, Hc, gc, ga, Xdot, Ydot):
+        g = self.grid
+        A = self._matrix(gc, ga)
+        b = self._face_divergence(6.0 * Hc * g.cf_w)
+        if Xdot or Ydot:  # squeeze term: -12 dH/dtau * area, dH/dtau = -X' cos - Y' sin
+            b = b + 12.0 * (Xdot * self._cos_n + Ydot * self._sin_n) * g.node_area
+        return A, b
+
+    def assemble(self, X: float, Y: float, Xdot: float = 0.0, Ydot: float = 0.0):
+        """The discrete system (A, b) of ``A P = b`` on the full-film region (for checks)."""
+        geo, g = self.geometry, self.grid
+        Hc = _film_at(geo, g.cf_land, g.cf_theta, X, Y)
+        Ha = _film_at(geo, g.af_land, g.af_theta, X, Y)
+        return self._system(Hc, *self._conductances(Hc, Ha), Xdot, Ydot)
+
     # -- solve ----------------------------------------------------------------
     def solve(self, X: float, Y: float, full_film_guess: np.ndarray | None = None,
-              max_iter: int = 100) -> FilmSolution:
-        """Static film (``dH/dtau = 0``) at the journal position (X, Y) = e / Cb."""
+              max_iter: int = 200, Xdot: float = 0.0, Ydot: float = 0.0) -> FilmSolution:
+        """Film at the journal position (X, Y) = e / Cb.
+
+        ``Xdot``, ``Ydot`` are the journal velocities dX/dtau (0 for the static film; used
+        to verify the damping coefficients by finite differences).
+        """
         geo, g = self.geometry, self.grid
         Hc = _film_at(geo, g.cf_land, g.cf_theta, X, Y)
         Ha = _film_at(geo, g.af_land, g.af_theta, X, Y)
@@ -289,10 +350,11 @@ class ReynoldsSolver:
             raise ReynoldsError(
                 f"journal position X={X:.4f}, Y={Y:.4f} touches the bore (min H {hmin:.3g})")
         gc, ga = self._conductances(Hc, Ha)
-        A = self._matrix(gc, ga)
         b = self._face_divergence(6.0 * Hc * g.cf_w)
+        if Xdot or Ydot:  # squeeze term: -12 dH/dtau * area, dH/dtau = -X' cos - Y' sin
+            b = b + 12.0 * (Xdot * self._cos_n + Ydot * self._sin_n) * g.node_area
         n = g.n_unknown
-        dA = A.diagonal()
+        dA = self._diagonal(gc, ga)
         if full_film_guess is None:
             inactive = np.ones(n, dtype=bool)
         else:
@@ -301,12 +363,10 @@ class ReynoldsSolver:
         lu = None
         for it in range(1, max_iter + 1):
             P = np.zeros(n)
-            idx = np.flatnonzero(inactive)
-            if idx.size:
-                Aii = A[idx][:, idx].tocsc()
-                lu = spla.splu(Aii)
-                P[idx] = lu.solve(b[idx])
-            lam = A @ P - b
+            if inactive.any():
+                lu = self._factor(gc, ga, dA, inactive)
+                P[inactive] = lu(b[inactive])
+            lam = self._apply_face_operator(gc, ga, P) - b  # A P - b
             lam[inactive] = 0.0
             new_active = (lam - dA * P) > 0.0
             new_inactive = ~new_active
@@ -336,7 +396,7 @@ class ReynoldsSolver:
                 # b = -... - 12 dH/dtau * area with dH/dtau = -X' cos - Y' sin
                 rhs.append(12.0 * cq_n * g.node_area)
             R = np.stack([r[idx] for r in rhs], axis=1)
-            dP = lu.solve(R)
+            dP = lu(R)
             c, s = self._cos_n[idx] * wgt[idx], self._sin_n[idx] * wgt[idx]
             for k in range(4):
                 col = -np.array([c @ dP[:, k], s @ dP[:, k]])
@@ -372,9 +432,9 @@ class ReynoldsSolver:
         side = float(2.0 * np.sum(Ha[edge] ** 3 * (4.0 * pm1 - pm2) / (2.0 * g.af_dzeta[edge])
                                   * g.af_dtheta[edge]) / 12.0)
         if not np.any(g.cf_entry):
-            # 360 deg film without a groove: flow entering the pressure zone, i.e. the
-            # largest circumferential flow through a face of the full-film region
-            # (Raimondi & Boyd's Q for the full bearing)
+            # 360 deg film closed on itself (feed="periodic", not the default): there is
+            # no leading edge; report the largest circumferential flow through any
+            # section (an estimate of the flow carried round, not validated)
             per_theta = np.bincount(np.searchsorted(np.unique(g.cf_theta), g.cf_theta),
                                     weights=qc)
             inlet = float(2.0 * per_theta.max())
@@ -384,3 +444,4 @@ class ReynoldsSolver:
                             jac_velocity=jv, friction=friction, inlet_flow=inlet,
                             side_flow=side, min_film=hmin, full_film=inactive,
                             iterations=it)
+

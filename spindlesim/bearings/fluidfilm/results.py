@@ -1,0 +1,68 @@
+"""Frozen result records of the fluid-film bearing analysis (SI units).
+
+Clearance bases (see docs/parts/theory_fluidfilm.md):
+
+- ``eccentricity_ratio`` = e / Cb (assembled clearance), as seed 003 Table 1;
+- ``sommerfeld`` = mu N D L / (psi^2 W) with psi = 2 Cp / D (seed 003 eq. 3, machined
+  clearance Cp; equal to Cb for a plain bearing); ``sommerfeld_b`` is the same group on Cb
+  (Raimondi & Boyd's S = mu N L D (R/C)^2 / W for a plain bearing);
+- ``k`` = K Cp / W and ``c`` = B Cp omega / W (seed 003 eqs. 15-16, on Cp), in the x, y
+  frame; ``k_load``/``c_load`` are on Cb in the load frame (x along the load, y 90 deg
+  ahead in the direction of rotation), the usual frame of Lund's tables and of Ocvirk;
+- ``reynolds_number`` = rho omega R Cb / mu (on Cb).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class FilmResult:
+    """Isoviscous operating point of a bearing at a given speed, load and viscosity."""
+
+    viscosity_Pa_s: float
+    speed_rad_s: float
+    load_N: np.ndarray  # (2,) force the shaft puts on the bearing, x, y
+    position_m: np.ndarray  # (2,) journal centre relative to the bearing centre, x, y
+    eccentricity_ratio: float  # e / Cb
+    attitude_angle_deg: float  # from the load line to the eccentricity, + in rotation sense
+    sommerfeld: float  # on Cp (seed 003 eq. 3)
+    sommerfeld_b: float  # on Cb
+    min_film_m: float
+    friction_torque_Nm: float  # on the journal
+    power_loss_W: float
+    friction_coefficient: float  # T / (R W)
+    inlet_flow_m3_s: float  # into the leading edges of the lands
+    side_flow_m3_s: float  # leakage through both bearing edges
+    reynolds_number: float  # rho omega R Cb / mu
+    K_N_m: np.ndarray  # (2, 2) x, y
+    C_Ns_m: np.ndarray  # (2, 2) x, y
+    k: np.ndarray  # K Cp / W, x, y
+    c: np.ndarray  # B Cp omega / W, x, y
+    k_load: np.ndarray  # K Cb / W, load frame
+    c_load: np.ndarray  # B Cb omega / W, load frame
+    pressure_Pa: np.ndarray  # on the grid unknowns
+    node_theta_rad: np.ndarray  # angle of each unknown in the x, y frame
+    node_z_m: np.ndarray  # axial position of each unknown (0 = mid-plane, half width)
+    full_film: np.ndarray | None = None  # full-film set on the solver grid (warm starts)
+
+
+@dataclass(frozen=True)
+class ThermalResult:
+    """Thermal equilibrium (seed 003 eqs. 4-14) and the operating point at it."""
+
+    temperature_mean_C: float
+    temperature_out_C: float
+    temperature_in_C: float
+    ambient_C: float
+    heat_generated_W: float  # H = T_f omega (eq. 6)
+    heat_to_oil_W: float  # H1 (eq. 7)
+    heat_to_housing_W: float  # H2 (eq. 9)
+    oil_flow_m3_s: float  # q of eq. 7
+    housing_conductance_W_K: float  # a_hat * A
+    isoviscous: bool
+    iterations: int
+    film: FilmResult

@@ -1,0 +1,188 @@
+"""Thermal equilibrium of a fluid-film bearing (seed 003 eqs. 4-14).
+
+Heat balance (eq. 5, with H3 = H4 = H5 = H6 = 0 as in the paper)::
+
+    H = H1 + H2,   H = T_f omega (eq. 6),   H1 = c rho q (theta_o - theta_i) (eq. 7),
+    H2 = a A (theta - theta_E) (eq. 9),     theta = lambda theta_i + (1 - lambda) theta_o (eq. 11)
+
+which gives the mean film temperature explicitly for a given viscosity (eq. 12)::
+
+    theta = [(1 - lambda)(H + a A theta_E) + c rho q theta_i] / [c rho q + a A (1 - lambda)]
+
+The viscosity at ``theta`` (Walther, eq. 13-14) changes H and q, so the equilibrium is the
+root of ``g(theta) = theta_12(mu(theta)) - theta``, bracketed and solved with
+:func:`scipy.optimize.brentq`.
+
+Choices (documented in docs/parts/theory_fluidfilm.md):
+
+- ``lambda`` = 1/3 by default: seed 003 Table 1 satisfies eq. 11 with lambda = 1/3
+  exactly for both bearings (38.542 = 25/3 + 2 x 45.313/3; 38.337 = 25/3 + 2 x 45.006/3).
+- ``q`` is the side leakage of the lands (the oil that leaves the bearing and is replaced
+  by fresh oil at theta_i; the rest of the inlet flow recirculates through the grooves).
+  ``oil_flow="inlet"`` uses the inlet flow of the lands instead (all oil renewed).
+- Housing heat-transfer coefficient from the air velocity w (m/s)::
+
+      a = max(15, 7 + 12 sqrt(w))   W/(m^2 K)
+
+  15-20 W/(m^2 K) for still air and ``7 + 12 sqrt(w)`` for moving air are the values
+  DIN 31652-2 / ISO 7902-1 give for the convection from a bearing housing (quoted from
+  memory of the standards; they could not be checked against the standard text here).
+- Housing area: by default the lateral surface of a cylindrical housing of outer
+  diameter 2.5 D and length 2 L, ``A = 5 pi D L``; give ``housing_area_m2`` when known.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from spindlesim.bearings.fluidfilm.equilibrium import EquilibriumError
+from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
+from spindlesim.bearings.fluidfilm.performance import operating_point
+from spindlesim.bearings.fluidfilm.reynolds import ReynoldsError, ReynoldsSolver
+from spindlesim.bearings.fluidfilm.results import FilmResult, ThermalResult
+from spindlesim.bearings.fluidfilm.viscosity import ConstantViscosity
+
+log = logging.getLogger(__name__)
+
+#: highest mean film temperature tried when bracketing the equilibrium [degC]
+MAX_TEMPERATURE_C = 250.0
+
+
+class ThermalEquilibriumError(RuntimeError):
+    """No thermal equilibrium exists in the temperature range tried."""
+
+
+def heat_transfer_coefficient(air_velocity_m_s: float) -> float:
+    """Housing-to-air heat-transfer coefficient a [W/(m^2 K)] (DIN 31652-2 / ISO 7902-1)."""
+    if air_velocity_m_s < 0:
+        raise ValueError("air velocity must be >= 0")
+    return max(15.0, 7.0 + 12.0 * math.sqrt(air_velocity_m_s))
+
+
+def default_housing_area(geometry: BearingGeometry) -> float:
+    """A = 5 pi D L: lateral surface of a housing of diameter 2.5 D and length 2 L."""
+    return 5.0 * math.pi * geometry.diameter_m * geometry.width_m
+
+
+@dataclass(frozen=True)
+class ThermalParameters:
+    """Oil and environment data of seed 003 Table 1 (SI, temperatures in degC)."""
+
+    inlet_C: float
+    ambient_C: float
+    density_kg_m3: float
+    specific_heat_J_kgK: float
+    air_velocity_m_s: float = 0.0
+    mixing_lambda: float = 1.0 / 3.0
+    housing_area_m2: float | None = None
+    heat_transfer_W_m2K: float | None = None
+    oil_flow: str = "side"
+
+    def __post_init__(self) -> None:
+        if not 0.0 <= self.mixing_lambda < 1.0:
+            raise ValueError("lambda must be in [0, 1)")
+        if self.density_kg_m3 <= 0 or self.specific_heat_J_kgK <= 0:
+            raise ValueError("oil density and specific heat must be positive")
+        if self.oil_flow not in ("side", "inlet"):
+            raise ValueError("oil_flow must be 'side' or 'inlet'")
+
+    def conductance(self, geometry: BearingGeometry) -> float:
+        """a A [W/K] of the housing."""
+        a = (self.heat_transfer_W_m2K if self.heat_transfer_W_m2K is not None
+             else heat_transfer_coefficient(self.air_velocity_m_s))
+        A = (self.housing_area_m2 if self.housing_area_m2 is not None
+             else default_housing_area(geometry))
+        return a * A
+
+
+def _balance(p: ThermalParameters, aA: float, film: FilmResult):
+    """Mean temperature of eq. 12 and the heat flows for one film state."""
+    H = film.power_loss_W
+    q = film.side_flow_m3_s if p.oil_flow == "side" else film.inlet_flow_m3_s
+    lam = p.mixing_lambda
+    crq = p.specific_heat_J_kgK * p.density_kg_m3 * q
+    theta = ((1 - lam) * (H + aA * p.ambient_C) + crq * p.inlet_C) / (crq + aA * (1 - lam))
+    theta_out = (theta - lam * p.inlet_C) / (1 - lam)
+    return theta, theta_out, H, crq * (theta_out - p.inlet_C), aA * (theta - p.ambient_C), q
+
+
+def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N: np.ndarray,
+                  params: ThermalParameters, xtol: float = 1e-4) -> ThermalResult:
+    """Thermal equilibrium and the operating point at it.
+
+    ``viscosity`` is a callable temperature [degC] -> Pa s (:mod:`viscosity`); a
+    :class:`ConstantViscosity` gives an isoviscous film whose temperatures follow from
+    eq. 12 without feedback.
+    """
+    geo = solver.geometry
+    aA = params.conductance(geo)
+    load = np.asarray(load_N, dtype=float)
+    rho = params.density_kg_m3
+    state = {"pos": None, "set": None, "n": 0}
+
+    def film_at(theta: float) -> FilmResult:
+        mu = viscosity(theta)
+        init = None if state["pos"] is None else state["pos"] / geo.clearance_m
+        f = operating_point(solver, mu, speed_rad_s, load, rho, initial=init,
+                            full_film_guess=state["set"])
+        state["pos"], state["set"] = f.position_m, f.full_film
+        state["n"] += 1
+        return f
+
+    if isinstance(viscosity, ConstantViscosity):
+        film = film_at(params.inlet_C)
+        th, tho, H, H1, H2, q = _balance(params, aA, film)
+        return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA,
+                             True, 1, film)
+
+    def g(theta: float) -> float:
+        return _balance(params, aA, film_at(theta))[0] - theta
+
+    lo = min(params.inlet_C, params.ambient_C)
+    try:
+        glo = g(lo)
+    except (EquilibriumError, ReynoldsError) as exc:
+        raise ThermalEquilibriumError(
+            f"the film cannot carry {np.hypot(*load):.4g} N even at {lo:.1f} degC "
+            f"(viscosity {viscosity(lo):.4g} Pa s): {exc}") from exc
+    if glo <= 0:  # cannot happen with positive friction heat; guard anyway
+        raise ThermalEquilibriumError(f"no heating at {lo:.1f} degC (g = {glo:.3g})")
+    hi, step, ghi = lo, 10.0, glo
+    tried = [lo]
+    first = True
+    while ghi > 0:
+        if first:
+            # first trial just above the eq. 12 temperature at the current viscosity: the
+            # root lies below it (the film thins as it heats), so this usually brackets
+            hi = min(lo + glo + 0.5, MAX_TEMPERATURE_C)
+            first = False
+        else:
+            hi = min(hi + step, MAX_TEMPERATURE_C)
+        tried.append(hi)
+        try:
+            ghi = g(hi)
+        except (EquilibriumError, ReynoldsError) as exc:
+            raise ThermalEquilibriumError(
+                f"no thermal equilibrium: the friction heat keeps the film above "
+                f"{tried[-2]:.1f} degC, and at {hi:.1f} degC (viscosity "
+                f"{viscosity(hi):.4g} Pa s) the film cannot carry the load ({exc}); "
+                f"temperatures tried: {', '.join(f'{t:.1f}' for t in tried)} degC") from exc
+        if ghi > 0 and hi >= MAX_TEMPERATURE_C:
+            raise ThermalEquilibriumError(
+                f"no thermal equilibrium below {MAX_TEMPERATURE_C:.0f} degC: heat generated "
+                f"still exceeds the heat removed at every temperature tried "
+                f"({', '.join(f'{t:.1f}' for t in tried)} degC)")
+        if ghi > 0:
+            lo, glo = hi, ghi
+            step *= 2.0
+    theta = brentq(g, lo, hi, xtol=xtol, rtol=1e-10)
+    film = film_at(theta)
+    th, tho, H, H1, H2, q = _balance(params, aA, film)
+    log.debug("thermal equilibrium %.4f degC after %d film solutions", th, state["n"])
+    return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA,
+                         False, state["n"], film)

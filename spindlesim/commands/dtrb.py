@@ -1,0 +1,26 @@
+"""``spindlesim dtrb [DECK]``: quasi-static double-row tapered roller bearing (seed 001 section 2-1)."""
+
+import click
+
+from .common import deck_argument, outdir_option, run_and_report
+
+
+@click.command("dtrb")
+@deck_argument
+@outdir_option
+@click.option("--preload", "preload_um", type=click.FloatRange(min=0.0), default=None,
+              help="Axial preload delta0 per row [um] (default: deck).")
+@click.option("--speed", "speed_rpm", type=click.FloatRange(min=0.0), default=None,
+              help="Inner-ring speed [rpm] (default: deck).")
+@click.option("--no-sweeps", is_flag=True, default=False, help="Skip the preload and radial-load sweeps.")
+def command(deck, outdir, preload_um, speed_rpm, no_sweeps):
+    """Load distribution per row, reactions, 5x5 stiffness; stiffness against preload and radial load."""
+    from ..analysis.runner import analyses, register_analysis
+    from ..deck.sections import dtrb as _dtrb_section  # noqa: F401  (registers the deck section)
+
+    if "dtrb" not in analyses():
+        from ..bearings.rolling.dtrb.run import run_dtrb
+
+        register_analysis("dtrb", run_dtrb)
+    run_and_report("dtrb", deck, outdir, "dtrb",
+                   {"preload_um": preload_um, "speed_rpm": speed_rpm, "sweeps": not no_sweeps})

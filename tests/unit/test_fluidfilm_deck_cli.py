@@ -1,0 +1,134 @@
+"""Deck entries three_lobe / plain and the thermal / coefficients commands."""
+
+import math
+import textwrap
+
+import h5py
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from spindlesim.deck import DeckError, parse_deck
+from spindlesim.deck import schema
+
+
+@pytest.fixture(autouse=True)
+def fluidfilm_types():
+    """Register three_lobe / plain for these tests only and restore the registry after.
+
+    Until the lead adds ``fluidfilm`` to ``spindlesim.deck.sections._MODULES`` the types
+    are not part of the global deck schema; registering them for the whole session would
+    change the union other tests' error messages are written against.
+    """
+    saved = dict(schema._BEARING_TYPES)
+    import spindlesim.deck.sections.fluidfilm as ff
+
+    schema.register_bearing_type(ff.ThreeLobeBearing)
+    schema.register_bearing_type(ff.PlainBearing)
+    yield ff
+    schema._BEARING_TYPES.clear()
+    schema._BEARING_TYPES.update(saved)
+    schema._deck_model_cache.clear()
+
+DECK = textwrap.dedent("""\
+    title: fluid-film test
+    bearings:
+      - name: front
+        node: 1
+        type: three_lobe
+        diameter_mm: 69.965
+        width_mm: 69.965
+        clearance_mm: 0.012
+        preload: 0.5
+        load_N: 400
+        lobes: {count: 3, groove_width_deg: 20, orientation: on_lobe}
+        oil: {viscosity_Pa_s: 0.002, density_kg_m3: 805, specific_heat_J_kgK: 1940.681, inlet_C: 25}
+        ambient: {temperature_C: 20, air_velocity_m_s: 0.1}
+        grid: {circumferential: 96, axial: 8}
+      - name: rear
+        node: 2
+        type: plain
+        diameter_mm: 50
+        width_mm: 25
+        clearance_mm: 0.04
+        load_N: 3000
+        grooves: {count: 2, width_deg: 20}
+        oil: {grade: ISO VG 32, density_kg_m3: 870, specific_heat_J_kgK: 1900, inlet_C: 40}
+        grid: {circumferential: 96, axial: 8}
+    operating:
+      speed_rpm: 2170
+    """)
+
+
+def test_deck_builds_si_bearings(fluidfilm_types):
+    ff = fluidfilm_types
+    d = parse_deck(DECK, "t.yaml").deck
+    front, rear = (ff.build_bearing(b, d) for b in d.bearings)
+    assert front.node == 0 and front.geometry.clearance_m == pytest.approx(12e-6)
+    assert front.geometry.machined_clearance_m == pytest.approx(24e-6)
+    assert front.viscosity(80.0) == 0.002
+    assert len(rear.geometry.lands) == 2 and rear.geometry.preload == 0.0
+    assert rear.viscosity.kinematic_cst(40.0) == pytest.approx(32.0)
+    K, C = front.linearized(2170 * math.pi / 30)
+    assert K.shape == (2, 2) and np.all(np.diag(C) > 0)
+
+
+@pytest.mark.parametrize("oil, message", [
+    ("{grade: ISO VG 3, viscosity_Pa_s: 0.002, density_kg_m3: 805, specific_heat_J_kgK: 1, inlet_C: 25}",
+     "exactly one"),
+    ("{grade: ISO VG 3, inlet_C: 25}", "density_kg_m3"),
+    ("{walther_m: 3.9, density_kg_m3: 805, specific_heat_J_kgK: 1940, inlet_C: 25}", "together"),
+])
+def test_bad_oil_is_located(oil, message):
+    bad = DECK.replace(
+        "{viscosity_Pa_s: 0.002, density_kg_m3: 805, specific_heat_J_kgK: 1940.681, inlet_C: 25}", oil)
+    with pytest.raises(DeckError) as exc:
+        parse_deck(bad, "bad.yaml")
+    text = str(exc.value)
+    assert "bad.yaml:" in text and message in text
+
+
+def test_plain_bearing_rejects_preload():
+    bad = DECK.replace("    load_N: 3000\n", "    load_N: 3000\n    preload: 0.3\n")
+    with pytest.raises(DeckError):
+        parse_deck(bad, "bad.yaml")
+
+
+def test_thermal_and_coefficients_commands(tmp_path):
+    from spindlesim.commands.coefficients import command as coefficients
+    from spindlesim.commands.thermal import command as thermal
+
+    deck = tmp_path / "ff.yaml"
+    deck.write_text(DECK)
+    out = tmp_path / "out"
+    r = CliRunner().invoke(thermal, [str(deck), "-o", str(out)])
+    assert r.exit_code == 0, r.output
+    with h5py.File(out / "thermal.h5") as f:
+        g = f["thermal/front"]
+        for key in ("temperature_mean_C", "temperature_out_C", "viscosity_Pa_s", "sommerfeld",
+                    "eccentricity_ratio", "attitude_angle_deg", "min_film_m",
+                    "friction_torque_Nm", "oil_flow_m3_s", "reynolds_number"):
+            assert "units" in g[key].attrs
+        assert g["viscosity_Pa_s"][()] == 0.002
+        assert g["sommerfeld"][()] == pytest.approx(1.881, rel=2e-3)
+        assert f["thermal/rear/temperature_mean_C"][()] > 40.0
+    r = CliRunner().invoke(coefficients, [str(deck), "-o", str(out), "--speed", "3000"])
+    assert r.exit_code == 0, r.output
+    with h5py.File(out / "coefficients.h5") as f:
+        K = f["coefficients/front/K_N_m"][()]
+        assert K.shape == (2, 2) and f["coefficients/front/K_N_m"].attrs["units"] == "N/m"
+        assert f["coefficients"].attrs["speed_rpm"] == pytest.approx(3000.0)
+        W, Cp = 400.0, 24e-6
+        np.testing.assert_allclose(f["coefficients/front/k"][()], K * Cp / W)
+    assert (out / "coefficients_front.png").stat().st_size > 1000
+
+
+def test_command_without_load_fails_cleanly(tmp_path):
+    from spindlesim.commands.thermal import command as thermal
+
+    deck = tmp_path / "ff.yaml"
+    deck.write_text(DECK.replace("    load_N: 400\n", ""))
+    r = CliRunner().invoke(thermal, [str(deck), "-o", str(tmp_path / "o")])
+    assert r.exit_code == 1
+    assert "load_N" in r.output
+    assert not (tmp_path / "o" / "thermal.h5").exists()

@@ -1,0 +1,110 @@
+"""Thermal equilibrium (seed 003 eqs. 4-14) and the bearing protocol."""
+
+import math
+
+import numpy as np
+import pytest
+
+from spindlesim.bearings.base import LinearizedBearing
+from spindlesim.bearings.fluidfilm.bearing import FluidFilmBearing
+from spindlesim.bearings.fluidfilm.geometry import multilobe_geometry, plain_geometry
+from spindlesim.bearings.fluidfilm.thermal import (
+    ThermalEquilibriumError,
+    ThermalParameters,
+    heat_transfer_coefficient,
+)
+from spindlesim.bearings.fluidfilm.viscosity import ConstantViscosity, WaltherViscosity
+
+GRID = dict(n_circ=96, n_axial=8)
+OMEGA = 2170 * math.pi / 30
+
+
+def seed_bearing(load=400.0, air=0.1, **kw):
+    geo = multilobe_geometry(0.069965, 0.069965, 12e-6, 0.5, 3)
+    oil = WaltherViscosity.from_grade("ISO VG 3", 805.0)
+    th = ThermalParameters(inlet_C=25.0, ambient_C=20.0, density_kg_m3=805.0,
+                           specific_heat_J_kgK=1940.681, air_velocity_m_s=air, **kw)
+    return FluidFilmBearing("front", 6, geo, oil, th, load, **GRID)
+
+
+@pytest.fixture(scope="module")
+def seed_result():
+    return seed_bearing().analyze(OMEGA)
+
+
+def test_heat_balance_closes(seed_result):
+    r = seed_result
+    f = r.film
+    lam = 1.0 / 3.0
+    # eq. 6: H = T_f omega;  eq. 10: H = c rho q (theta_o - theta_i) + a A (theta - theta_E)
+    assert r.heat_generated_W == pytest.approx(f.friction_torque_Nm * OMEGA, rel=1e-12)
+    h1 = 1940.681 * 805.0 * f.side_flow_m3_s * (r.temperature_out_C - 25.0)
+    h2 = r.housing_conductance_W_K * (r.temperature_mean_C - 20.0)
+    assert r.heat_generated_W == pytest.approx(h1 + h2, rel=1e-5)
+    # eq. 11 and the viscosity at the mean film temperature (eq. 14)
+    assert r.temperature_mean_C == pytest.approx(lam * 25.0 + (1 - lam) * r.temperature_out_C)
+    oil = WaltherViscosity.from_grade("ISO VG 3", 805.0)
+    assert f.viscosity_Pa_s == pytest.approx(oil(r.temperature_mean_C), rel=1e-5)
+    assert r.temperature_out_C > r.temperature_mean_C > 25.0
+
+
+def test_more_cooling_gives_a_cooler_film(seed_result):
+    cooler = seed_bearing(air=5.0).analyze(OMEGA)
+    assert heat_transfer_coefficient(5.0) > heat_transfer_coefficient(0.1)
+    assert cooler.temperature_mean_C < seed_result.temperature_mean_C - 1.0
+    assert cooler.film.viscosity_Pa_s > seed_result.film.viscosity_Pa_s
+
+
+def test_isoviscous_film_has_no_feedback():
+    b = seed_bearing()
+    iso = FluidFilmBearing("front", 6, b.geometry, ConstantViscosity(0.002, 805.0), b.thermal,
+                           400.0, **GRID)
+    r = iso.analyze(OMEGA)
+    assert r.isoviscous and r.film.viscosity_Pa_s == 0.002
+    assert r.film.sommerfeld == pytest.approx(1.881, rel=2e-3)
+
+
+def test_no_equilibrium_is_reported_clearly():
+    with pytest.raises(ThermalEquilibriumError, match="cannot carry"):
+        seed_bearing(load=1.0e8).analyze(OMEGA)
+
+
+def test_protocol_and_frames(seed_result):
+    b = seed_bearing()
+    assert isinstance(b, LinearizedBearing)
+    K, C = b.linearized(OMEGA)
+    np.testing.assert_allclose(K, seed_result.film.K_N_m, rtol=1e-6)
+    np.testing.assert_allclose(C, seed_result.film.C_Ns_m, rtol=1e-6)
+    # the deck load acts downward: the journal sinks (y < 0) and moves in the rotation sense
+    pos = seed_result.film.position_m
+    assert pos[1] < 0
+    # a static load vector is used when the deck has none
+    free = FluidFilmBearing("front", 6, b.geometry, b.viscosity, b.thermal, None, **GRID)
+    K2, _ = free.linearized(OMEGA, np.array([0.0, -400.0]))
+    np.testing.assert_allclose(K2, K, rtol=1e-6)
+    with pytest.raises(ValueError):
+        free.linearized(OMEGA)
+    with pytest.raises(ValueError, match="positive speed"):
+        b.linearized(0.0)
+
+
+def test_seed_dimensionless_groups_on_cp(seed_result):
+    f = seed_result.film
+    W, Cb, Cp = 400.0, 12e-6, 24e-6
+    assert f.k == pytest.approx(f.K_N_m * Cp / W)
+    assert f.c == pytest.approx(f.C_Ns_m * Cp * OMEGA / W)
+    # S_p = S_b (1 - mp)^2 (REFERENCES.md)
+    assert f.sommerfeld == pytest.approx(f.sommerfeld_b * 0.25, rel=1e-12)
+    mu, N, D = f.viscosity_Pa_s, OMEGA / (2 * math.pi), 0.069965
+    assert f.sommerfeld == pytest.approx(mu * N * D * D / ((2 * Cp / D) ** 2 * W), rel=1e-12)
+    assert f.reynolds_number == pytest.approx(805.0 * OMEGA * D / 2 * Cb / mu, rel=1e-12)
+
+
+def test_grooved_plain_bearing_runs():
+    geo = plain_geometry(0.05, 0.025, 40e-6, grooves=2, groove_width_deg=20)
+    b = FluidFilmBearing("p", 0, geo, ConstantViscosity(0.01, 850.0),
+                         ThermalParameters(40.0, 20.0, 850.0, 1900.0), 1500.0, **GRID)
+    r = b.analyze(300.0)
+    assert 0.0 < r.film.eccentricity_ratio < 1.0
+    assert r.film.position_m[1] < 0
+    assert np.all(np.linalg.eigvals(r.film.C_Ns_m + r.film.C_Ns_m.T).real > 0)
