@@ -23,6 +23,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
     "thermal": ("thermal", "Thermal equilibrium of fluid-film bearings (seed 003 eqs. 4-14)."),
     "coefficients": ("coefficients", "Fluid-film bearing stiffness and damping at thermal equilibrium."),
+    "dtrb": ("dtrb", "Double-row tapered roller bearing: load distribution, 5x5 stiffness, preload/load sweeps."),
     "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
     "run": ("run", "Every analysis the deck lists."),
     "sweep": ("sweep", "Parameter study over any deck value (process pool or Dask), resumable."),

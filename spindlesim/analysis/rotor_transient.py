@@ -149,3 +149,33 @@ def integrate(rotor: Rotor, t_end: float, dt: float, nonlinear: Sequence = (),
         time, hist, bforce, iters = time[:last], hist[:last], bforce[:last], iters[:last]
     return RotorTransientResult(time_s=time, displacement_m=hist, recorded_nodes=nodes, dof_names=dofs.names,
                                 bearing_force_N=bforce, complete=complete, reason=reason, newton_iterations=iters)
+
+
+def static_equilibrium(rotor: Rotor, nonlinear: Sequence, q0: np.ndarray | None = None, tol: float = 1e-10,
+                       max_iter: int = 50) -> np.ndarray:
+    """K q - sum_b f_b(q_b) = Q (point loads, gravity) by Newton with the bearings' tangent stiffness.
+
+    Raises ArithmeticError naming the residual when Newton does not converge.
+    """
+    shaft = assemble_shaft(rotor)
+    sysm = system_matrices(rotor, shaft, rotor.speed_rad_s)
+    K, n, dofs = sysm.K, sysm.size, rotor.dofs
+    Q = load_vector(rotor, shaft)
+    b_idx = [np.array([dofs.index(b.node, d) for d in b.dof_names]) for b in nonlinear]
+    q = np.zeros(n) if q0 is None else np.array(q0, float)
+    scale_f = max(np.max(np.abs(Q)), 1.0)
+    for it in range(1, max_iter + 1):
+        R = Q - K @ q
+        J = K.copy()
+        for b, idx in zip(nonlinear, b_idx):
+            f, kt, _ = b.force_and_tangent(q[idx], np.zeros(len(idx)), 0.0)
+            R[idx] += f
+            J[np.ix_(idx, idx)] += kt
+        dq = np.linalg.solve(J, R)
+        # damp large first steps (contact stiffness is strongly nonlinear near zero load)
+        step = 1.0
+        q = q + step * dq
+        if np.max(np.abs(R)) <= tol * scale_f * 1e3 and np.max(np.abs(dq)) <= tol * max(np.max(np.abs(q)), 1e-9):
+            return q
+    raise ArithmeticError(f"static equilibrium with nonlinear bearings did not converge in {max_iter} Newton "
+                          f"iterations (residual {np.max(np.abs(R)):.3g} N)")

@@ -161,7 +161,13 @@ def _coefficients(loaded, outdir, run, opts, progress):
     return run_coefficients(loaded, outdir, run, opts, progress)
 
 
-for _n, _f in (("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
+def _dtrb(loaded, outdir, run, opts, progress):
+    from ..bearings.rolling.dtrb.run import run_dtrb
+
+    return run_dtrb(loaded, outdir, run, opts, progress)
+
+
+for _n, _f in (("dtrb", _dtrb), ("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
                ("unbalance", _unbalance)):
     register_analysis(_n, _f)
 

@@ -32,7 +32,8 @@ def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x"
     forces = []
     for b in rotor.bearings:
         kb, _ = b.linearized(rotor.speed_rad_s, None if loads is None else loads.get(b.name))
-        forces.append(-kb @ disp[b.node])
+        idx = [dofs.index(b.node, d) for d in getattr(b, "dof_names", ("x", "y"))]
+        forces.append((-kb @ q[idx])[:2])
     applied = np.array([Q[dofs.component("x")].sum(), Q[dofs.component("y")].sum()])
     e = np.zeros(dofs.size)
     e[dofs.index(stiffness_node, stiffness_dof)] = 1.0

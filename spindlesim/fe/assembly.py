@@ -139,7 +139,7 @@ def bearing_static_loads(rotor: Rotor, shaft: ShaftMatrices) -> dict | None:
     K = shaft.stiffness(0.0).copy()
     k_stiff = 1e3 * max(np.max(np.abs(np.diag(K))), 1.0)
     for b in rotor.bearings:
-        for d in getattr(b, "dof_names", ("x", "y"))[:2]:
+        for d in getattr(b, "dof_names", ("x", "y")):
             i = rotor.dofs.index(b.node, d)
             K[i, i] += k_stiff
     q = np.linalg.solve(K, load_vector(rotor, shaft))

@@ -26,7 +26,10 @@ model).  Top-level section (what ``spindlesim dtrb`` computes)::
 
 Bearing type for rotor decks (``bearings:`` list)::
 
-      - {type: dtrb, name: hub, node: 3, preload_um: 30, axial_load_N: 0, geometry: {...as bearing above...}}
+      - {type: dtrb, name: hub, node: 3, preload_um: 30, axial_load_N: 0, dofs: 5, geometry: {...as bearing above...}}
+
+``dofs: 5`` (default) couples the node's (x, y, z, theta_x, theta_y) and gives the rotor its axial
+DOF (seed 001's 5 DOF/node model); ``dofs: 2`` adds only the radial 2x2 block.
 """
 
 from __future__ import annotations
@@ -118,6 +121,7 @@ class DtrbBearingEntry(DeckModel):
     geometry: DtrbGeometrySpec
     preload_um: Annotated[float, Field(ge=0.0)] = 0.0
     axial_load_N: float = 0.0
+    dofs: Literal[2, 5] = 5  # 5: x, y, z, theta_x, theta_y (the rotor gets the axial DOF); 2: x, y only
 
 
 def geometry_from(spec: DtrbGeometrySpec):
@@ -138,8 +142,12 @@ def geometry_from(spec: DtrbGeometrySpec):
 def _build_bearing(entry: DtrbBearingEntry, deck):
     from ...bearings.rolling.dtrb import DtrbBearing
 
+    from ...bearings.rolling.dtrb.bearing import DOFS_2, DOFS_5
+
+    speed = 0.0 if getattr(deck, "operating", None) is None else deck.operating.speed_rpm * math.pi / 30.0
     return DtrbBearing(geometry_from(entry.geometry), 1e-6 * entry.preload_um, name=entry.name,
-                       node=entry.node - 1, axial_load_N=entry.axial_load_N)
+                       node=entry.node - 1, axial_load_N=entry.axial_load_N, speed_rad_s=speed,
+                       dof_names=DOFS_5 if entry.dofs == 5 else DOFS_2)
 
 
 register_section("dtrb", DtrbSection)
