@@ -167,7 +167,13 @@ def _dtrb(loaded, outdir, run, opts, progress):
     return run_dtrb(loaded, outdir, run, opts, progress)
 
 
-for _n, _f in (("dtrb", _dtrb), ("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
+def _rotor_transient(loaded, outdir, run, opts, progress):
+    from .rotor_transient_run import run_rotor_transient
+
+    return run_rotor_transient(loaded, outdir, run, opts, progress)
+
+
+for _n, _f in (("rotor_transient", _rotor_transient), ("dtrb", _dtrb), ("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
                ("unbalance", _unbalance)):
     register_analysis(_n, _f)
 

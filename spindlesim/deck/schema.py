@@ -176,6 +176,7 @@ def deck_model() -> type[BaseModel]:
         frf=(FrfSection, FrfSection()),
         unbalance=(Optional[UnbalanceSection], None),
         sweep=(Optional[SweepSection], None),
+        rotor_transient=(Optional[RotorTransientSection], None),
         **extra,
     )
     _deck_model_cache["deck"] = model
@@ -199,3 +200,25 @@ class SweepRange(DeckModel):
 
 
 SweepSection.model_rebuild()
+
+
+class RotorTransientSection(DeckModel):
+    """Time response of a rotor with nonlinear bearings (seed 001 section 2-2): ``spindlesim transient``."""
+
+    duration_s: PositiveFloat = 0.5
+    time_step_s: PositiveFloat = 5e-5  # rounded down so a revolution is a whole number of steps
+    record_node: Optional[NodeNumber] = None  # default: the first nonlinear bearing's node
+    settle_fraction: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.3  # start of the steady part for the spectrum
+    unbalance: bool = True  # apply the deck's unbalance section
+    perturbation: Optional["Perturbation"] = None
+
+
+class Perturbation(DeckModel):
+    """A static force held until t = 0 and then released (free vibration from a smooth shape)."""
+
+    node: NodeNumber
+    dof: Dof = "x"
+    force_N: float = 100.0
+
+
+RotorTransientSection.model_rebuild()

@@ -130,23 +130,63 @@ class SystemMatrices:
 
 
 def bearing_static_loads(rotor: Rotor, shaft: ShaftMatrices) -> dict | None:
-    """(x, y) force of the shaft on each bearing from the static loads, for bearings without a load
-    of their own (``load_N is None``). The rotor is solved on stiff isotropic supports at the
-    bearing nodes: exact for two bearings (statically determinate), the rigid-support
-    distribution for more."""
+    """Force of the shaft on each bearing at static equilibrium, for bearings whose coefficients depend
+    on load and that have no load of their own (``load_N is None``); entries follow each bearing's
+    ``dof_names`` ((x, y), or (x, y, z, theta_x, theta_y) with moments).
+
+    First the rotor is solved with its load-independent bearings at their own stiffness and the
+    load-dependent ones as stiff supports (exact for two radial bearings, statically determinate). If some bearings are nonlinear (they have
+    ``force_and_tangent``, e.g. the DTRB), the static equilibrium is then solved with their
+    full nonlinear reaction (Newton) and the other bearings linearised at the first loads.
+    """
     if not any(getattr(b, "load_N", 0.0) is None for b in rotor.bearings):
         return None
-    K = shaft.stiffness(0.0).copy()
+    Q = load_vector(rotor, shaft)
+    K0 = shaft.stiffness(0.0)
+    K = K0.copy()
     k_stiff = 1e3 * max(np.max(np.abs(np.diag(K))), 1.0)
+    idx = {b.name: [rotor.dofs.index(b.node, d) for d in getattr(b, "dof_names", ("x", "y"))] for b in rotor.bearings}
+    load_dependent = [b for b in rotor.bearings if getattr(b, "load_N", 0.0) is None]
     for b in rotor.bearings:
-        for d in getattr(b, "dof_names", ("x", "y")):
-            i = rotor.dofs.index(b.node, d)
-            K[i, i] += k_stiff
-    q = np.linalg.solve(K, load_vector(rotor, shaft))
-    loads = {}
+        if b in load_dependent:
+            for i in idx[b.name]:
+                K[i, i] += k_stiff
+        else:
+            K[np.ix_(idx[b.name], idx[b.name])] += b.linearized(0.0, None)[0]
+    q = np.linalg.solve(K, Q)
+    loads = {b.name: k_stiff * q[idx[b.name]] for b in load_dependent}
+    nonlinear = [b for b in rotor.bearings if hasattr(b, "force_and_tangent")]
+    if not nonlinear:
+        return loads
+    W = rotor.speed_rad_s
+    Kl = shaft.stiffness(W).copy()
     for b in rotor.bearings:
-        i = [rotor.dofs.index(b.node, d) for d in ("x", "y")]
-        loads[b.name] = k_stiff * q[i]
+        if b in nonlinear:
+            continue
+        kb, _ = b.linearized(W, loads.get(b.name))
+        Kl[np.ix_(idx[b.name], idx[b.name])] += kb
+    q = np.zeros(len(Q))
+    for it in range(60):
+        R = Q - Kl @ q
+        J = Kl.copy()
+        forces = {}
+        for b in nonlinear:
+            f, kt, _ = b.force_and_tangent(q[idx[b.name]], np.zeros(len(idx[b.name])), 0.0)
+            forces[b.name] = f
+            R[idx[b.name]] += f
+            J[np.ix_(idx[b.name], idx[b.name])] += kt
+        dq = np.linalg.solve(J, R)
+        big = np.max(np.abs(dq[rotor.dofs.component("x")])) + np.max(np.abs(dq[rotor.dofs.component("y")]))
+        if big > 2e-5:  # limit steps to 20 um: contact stiffness changes fast near zero load
+            dq *= 2e-5 / big
+        q += dq
+        if np.max(np.abs(R)) <= 1e-8 * max(np.max(np.abs(Q)), 1.0) and np.max(np.abs(dq)) < 1e-13:
+            break
+    else:
+        raise ArithmeticError(f"static equilibrium with nonlinear bearings did not converge in 60 Newton "
+                              f"iterations (residual {np.max(np.abs(R)):.3g} N)")
+    for b in nonlinear:
+        loads[b.name] = -forces[b.name]
     return loads
 
 
