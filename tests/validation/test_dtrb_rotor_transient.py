@@ -48,7 +48,7 @@ def test_rotor_at_static_equilibrium_stays_there():
     assert drift < 1e-3 * np.abs(st.static_displacement_m).max()
     # the DTRB carries the disk's radial and axial load (lever arm: it also carries more than the load)
     fb = st.transient.bearing_force_N[-1, 0]
-    assert fb[2] == pytest.approx(-2000.0, rel=1e-6)  # axial: all of it
+    assert fb[2] == pytest.approx(-2000.0, rel=1e-3)  # axial: all of it (to the roller-passage ripple)
     assert fb[1] > 2000.0  # radial: more than the disk load (overhung)
 
 
