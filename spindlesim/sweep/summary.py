@@ -18,8 +18,12 @@ def _generic(f) -> dict[str, float]:
     out: dict[str, float] = {}
 
     def visit(name, obj):
-        if isinstance(obj, h5py.Dataset) and obj.shape == () and obj.dtype.kind in "iuf":
-            out[name] = float(obj[()])
+        if isinstance(obj, h5py.Dataset) and obj.dtype.kind in "iuf":
+            if obj.shape == ():
+                out[name] = float(obj[()])
+            elif obj.size <= 4:  # 2x2 coefficient matrices, (x, y) pairs
+                for idx, v in np.ndenumerate(obj[()]):
+                    out[name + "[" + ",".join(map(str, idx)) + "]"] = float(v)
         if isinstance(obj, h5py.Group):
             for k, v in obj.attrs.items():
                 if isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool):
@@ -76,6 +80,8 @@ def case_scalars(paths: list[Path]) -> dict[str, float]:
 
 # curves drawn side by side for the cases of a sweep: analysis -> (file, x dataset, y dataset, x label, y label)
 OVERLAYS = {
+    "rotor_transient": ("transient.h5", "transient/spectrum/frequency_hz", "transient/spectrum/amplitude_m",
+                        "frequency [Hz]", "spectrum amplitude [m]"),
     "transient": ("transient.h5", "transient/spectrum/frequency_hz", "transient/spectrum/amplitude_m",
                   "frequency [Hz]", "spectrum amplitude [m]"),
     "frf": ("frf.h5", "frf/frequency_hz", "frf/receptance_m_N", "frequency [Hz]", "|receptance| [m/N]"),
