@@ -23,6 +23,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
     "thermal": ("thermal", "Thermal equilibrium of fluid-film bearings (seed 003 eqs. 4-14)."),
     "coefficients": ("coefficients", "Fluid-film bearing stiffness and damping at thermal equilibrium."),
+    "transient": ("transient", "Time simulation: rotor in a roller bearing (seed 000) or a rotor on a DTRB (seed 001)."),
     "dtrb": ("dtrb", "Double-row tapered roller bearing: load distribution, 5x5 stiffness, preload/load sweeps."),
     "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
     "run": ("run", "Every analysis the deck lists."),

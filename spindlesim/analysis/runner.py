@@ -173,7 +173,18 @@ def _rotor_transient(loaded, outdir, run, opts, progress):
     return run_rotor_transient(loaded, outdir, run, opts, progress)
 
 
-for _n, _f in (("rotor_transient", _rotor_transient), ("dtrb", _dtrb), ("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
+def _transient(loaded, outdir, run, opts, progress):
+    """Roller-bearing transient (deck section ``transient:``, seed 000), or the time response of a
+    rotor with nonlinear bearings (a shaft with e.g. a ``dtrb`` bearing, seed 001)."""
+    d = loaded.deck
+    if getattr(d, "transient", None) is None and d.shaft is not None:
+        return _rotor_transient(loaded, outdir, run, opts, progress)
+    from ..bearings.rolling.report import run_transient_analysis
+
+    return run_transient_analysis(loaded, outdir, run, opts, progress)
+
+
+for _n, _f in (("transient", _transient), ("rotor_transient", _rotor_transient), ("dtrb", _dtrb), ("thermal", _thermal), ("coefficients", _coefficients), ("contact", _contact), ("static", _static), ("modal", _modal), ("campbell", _campbell), ("frf", _frf),
                ("unbalance", _unbalance)):
     register_analysis(_n, _f)
 

@@ -42,7 +42,7 @@ def amplitude_spectrum(signal: np.ndarray, sample_rate_hz: float) -> Spectrum:
     n = x.shape[0]
     if n < 4:
         return Spectrum(np.zeros(0), np.zeros((0, x.shape[1])))
-    w = np.hanning(n)
+    w = 0.5 - 0.5 * np.cos(2.0 * np.pi * np.arange(n) / n)  # periodic Hann
     xw = (x - x.mean(axis=0)) * w[:, None]
     X = np.fft.rfft(xw, axis=0)
     amp = 2.0 * np.abs(X) / w.sum()

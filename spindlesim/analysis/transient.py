@@ -62,9 +62,9 @@ class TransientSettings:
 
     duration_s: simulated time.  settle_s: start of the steady part used for
     spectrum and Poincare map (default: 40% of the run).  sample_rate_hz:
-    output grid (default 50 roller-pass periods per... i.e. 50 N f_cage, at least
-    2 kHz).  rtol / atol_scale: relative tolerance and the absolute tolerance per
-    state as rtol * state scale (the system's ``state_scale`` if it has one).
+    output grid (default 50 N f_cage, at least 2 kHz).  rtol / atol: relative
+    tolerance and absolute tolerance; atol defaults to rtol times the system's
+    ``state_scale()`` (typical magnitude of each state) if it has one.
     """
 
     duration_s: float

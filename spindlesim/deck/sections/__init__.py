@@ -6,7 +6,7 @@ add the module name to ``_MODULES`` to have it loaded.
 
 from importlib import import_module
 
-_MODULES: tuple[str, ...] = ("contact", "fluidfilm", "dtrb")
+_MODULES: tuple[str, ...] = ("contact", "fluidfilm", "dtrb", "transient")
 
 for _name in _MODULES:
     import_module(f"{__name__}.{_name}")

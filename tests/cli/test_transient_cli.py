@@ -1,0 +1,53 @@
+"""`spindlesim transient`: files, datasets, units, attributes; incomplete runs are still written."""
+
+
+import h5py
+import pytest
+from click.testing import CliRunner
+
+from spindlesim.commands.transient import command
+
+
+def test_rigid_race_run_writes_contract(tmp_path):
+    out = tmp_path / "out"
+    r = CliRunner().invoke(command, ["--rollers", "8", "--model", "rigid_race", "--duration", "0.12", "-o", str(out)])
+    assert r.exit_code == 0, r.output
+    for name in ("transient.h5", "transient_time.png", "transient_orbit.png", "transient_spectrum.png",
+                 "transient_poincare.png", "transient_roller_forces.png"):
+        assert (out / name).stat().st_size > 0
+    with h5py.File(out / "transient.h5") as f:
+        g = f["transient"]
+        assert g.attrs["rollers"] == 8
+        assert g.attrs["cage_frequency_hz"] == pytest.approx(33.22, abs=0.005)
+        assert g.attrs["roller_pass_frequency_hz"] == pytest.approx(265.8, abs=0.05)
+        assert bool(f.attrs["complete"])
+        t = g["time_s"][()]
+        assert g["displacement_m"].shape == (t.size, 2)
+        assert g["spectrum/amplitude_m"].shape == (g["spectrum/frequency_hz"].size, 2)
+        assert g["poincare/x_m"].shape == g["poincare/y_m"].shape and g["poincare/x_m"].size > 5
+        for ds in ("time_s", "displacement_m", "spectrum/frequency_hz", "spectrum/amplitude_m", "poincare/x_m"):
+            assert g[ds].attrs["units"] in ("s", "m", "Hz")
+        assert "transient" in f.attrs["deck_text"]
+
+
+def test_bad_deck_exits_2(tmp_path):
+    deck = tmp_path / "bad.yaml"
+    deck.write_text("transient:\n  rollers: 2\n")
+    r = CliRunner().invoke(command, [str(deck), "-o", str(tmp_path / "o")])
+    assert r.exit_code == 2
+    assert "rollers" in r.output
+    assert not (tmp_path / "o").exists()
+
+
+def test_incomplete_result_is_written_and_marked(tmp_path):
+    from spindlesim.analysis.transient import TransientSettings, run_transient
+    from spindlesim.bearings.rolling.report import write_transient
+    from spindlesim.output.hdf5 import RunInfo
+    from tests.unit.test_rolling_transient_driver import Oscillator
+
+    res = run_transient(Oscillator(t_fail=0.26, fail="interrupt"), TransientSettings(0.5, sample_rate_hz=1000, chunks=10))
+    path = write_transient(tmp_path / "transient.h5", RunInfo("deck", "<test>", "0" * 64), res)
+    with h5py.File(path) as f:
+        assert not bool(f.attrs["complete"])
+        assert "interrupted" in f.attrs["incomplete_reason"]
+        assert f["transient/time_s"][-1] <= 0.3
