@@ -43,9 +43,7 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     whirl = np.full(freq.shape, "", dtype=object)
     prev_shapes = None
     prev_freq = None
-    for i, s in enumerate(speeds):
-        sysm = system_matrices(rotor, shaft, s * np.pi / 30)
-        m = modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes + extra, s)
+    for i, (s, m) in enumerate(zip(speeds, _modal_at_speeds(rotor, shaft, speeds, n_modes + extra))):
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
         if prev_shapes is None:
             take = np.arange(min(n_track, len(m.frequency_hz)))
@@ -76,6 +74,24 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
 
 
 API684_MIN_AF = 2.5
+
+
+def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int):
+    """Modal results at every speed, computed on all cores (LAPACK releases the GIL; each thread
+    uses single-threaded BLAS), yielded in speed order for the sequential mode tracking."""
+    import os
+    from concurrent.futures import ThreadPoolExecutor
+
+    def one(s: float):
+        sysm = system_matrices(rotor, shaft, s * np.pi / 30)
+        return modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes, s)
+
+    workers = min(len(speeds), os.cpu_count() or 1)
+    if workers <= 1:
+        yield from (one(s) for s in speeds)
+        return
+    with ThreadPoolExecutor(max_workers=workers) as ex:
+        yield from ex.map(one, speeds)
 
 
 def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarray,

@@ -1,5 +1,6 @@
-"""State-space eigen analysis (seed 003 eqs. 24-25), QR algorithm via LAPACK (scipy.linalg.eig).
+"""State-space eigen analysis (seed 003 eqs. 24-25), QR algorithm via LAPACK.
 
+All eigenvalues by the QR algorithm (LAPACK dgeev through numpy.linalg.eig).
 First-order form p' = A p, p = [q, q'], A = [[0, I], [-M^-1 K, -M^-1 C]].
 An eigenvalue lambda = -zeta w_n + i w_d gives the damped frequency w_d / 2 pi,
 damping ratio zeta = -Re(lambda) / |lambda| and log decrement
@@ -56,7 +57,8 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     n_nodes = dofs.n_nodes
     lateral = [dofs.names.index(d) for d in DOFS_4]
     A = state_matrix(sysm)
-    lam, vec = sla.eig(A, check_finite=False, overwrite_a=True)
+    # numpy's geev wrapper releases the GIL (scipy's does not), so Campbell sweeps can use threads
+    lam, vec = np.linalg.eig(A)
     n = sysm.size
     mag = np.abs(lam)
     rigid = mag < RIGID_BODY_RAD_S
