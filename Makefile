@@ -17,7 +17,11 @@ install-test: $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 
 run: install
-	$(BIN)/spindlesim run -o $(OUT)/default
+	$(BIN)/spindlesim run -o $(OUT)/spindle
+	$(BIN)/spindlesim contact -o $(OUT)/contact
+	$(BIN)/spindlesim dtrb -o $(OUT)/dtrb
+	$(BIN)/spindlesim transient --rollers 8 -o $(OUT)/transient
+	$(BIN)/spindlesim run decks/seed001_dtrb_rotor.yaml -o $(OUT)/seed001_dtrb_rotor
 
 test: install-test
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python -m pytest
