@@ -2,7 +2,7 @@
 
 Long-run checks (roller-pass line of the flexible model) are too slow for the
 test suite with the pure-numpy right-hand side; see benchmarks/bench_transient.py
-and docs/parts/validation_transient.md for the measured values.
+and docs/validation.md for the measured values.
 """
 
 import numpy as np

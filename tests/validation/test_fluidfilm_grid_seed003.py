@@ -3,7 +3,7 @@
 Grid: the default (192 intervals per 360 deg, 12 across the half width) must give the
 eight coefficients within 1 % of a grid twice as fine in both directions (error measured
 relative to the largest entry of each matrix: small cross terms are compared on the scale
-of the matrix).  Study in docs/parts/validation_fluidfilm.md.
+of the matrix).  Study in docs/validation.md.
 
 Seed 003 (node 7 bearing: D 69.965 mm, Cb 12 um, mp 0.5, 400 N, 2170 rpm): DESIGN.md section
 1 reports two independent Reynolds solvers at mu = 0.002 Pa s and L/D = 1: S_p 1.88,

@@ -1,6 +1,6 @@
 """Frozen result records of the fluid-film bearing analysis (SI units).
 
-Clearance bases (see docs/parts/theory_fluidfilm.md):
+Clearance bases (see docs/theory.md):
 
 - ``eccentricity_ratio`` = e / Cb (assembled clearance), as seed 003 Table 1;
 - ``sommerfeld`` = mu N D L / (psi^2 W) with psi = 2 Cp / D (seed 003 eq. 3, machined

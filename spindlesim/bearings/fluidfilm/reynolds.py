@@ -42,7 +42,7 @@ from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
 
 log = logging.getLogger(__name__)
 
-#: Default grid, chosen by the grid-convergence study (docs/parts/validation_fluidfilm.md):
+#: Default grid, chosen by the grid-convergence study (docs/validation.md):
 #: intervals per 360 deg of circumference and across the half width.
 DEFAULT_CIRCUMFERENTIAL = 192
 DEFAULT_AXIAL = 12

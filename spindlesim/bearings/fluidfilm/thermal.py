@@ -13,7 +13,7 @@ The viscosity at ``theta`` (Walther, eq. 13-14) changes H and q, so the equilibr
 root of ``g(theta) = theta_12(mu(theta)) - theta``, bracketed and solved with
 :func:`scipy.optimize.brentq`.
 
-Choices (documented in docs/parts/theory_fluidfilm.md):
+Choices (documented in docs/theory.md):
 
 - ``lambda`` = 1/3 by default: seed 003 Table 1 satisfies eq. 11 with lambda = 1/3
   exactly for both bearings (38.542 = 25/3 + 2 x 45.313/3; 38.337 = 25/3 + 2 x 45.006/3).

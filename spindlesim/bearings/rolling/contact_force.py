@@ -5,7 +5,7 @@
 
 for penetration delta > 0 (zero otherwise).  m3 > 0 keeps the damping term
 from jumping at first touch (seed 000).  Two implementation choices, both
-documented in docs/parts/theory_transient.md: the normal force is clipped at
+documented in docs/theory.md: the normal force is clipped at
 zero (a contact cannot pull; Hunt and Crossley 1975 discuss the sticky force
 the unclipped form gives while separating), and the sign of the slip velocity
 is regularised as v / sqrt(v^2 + v_reg^2) so the integrator sees a continuous
