@@ -68,7 +68,7 @@ def solve_roller_contact(
     raceway_E_Pa: float = STEEL[0], raceway_nu: float = STEEL[1],
     nx: int = 64, ny: int = 256,
     x_half_width_m: float | None = None,
-    tol: float = 1e-7,
+    tol: float = 1e-5,
     check_edges: bool = True,
 ) -> ContactResult:
     """Contact pressure of a roller on an inner/outer raceway (or a flat).
@@ -153,7 +153,7 @@ def solve_point_contact(
     E2_Pa: float = STEEL[0], nu2: float = STEEL[1],
     n: int = 256,
     domain_factor: float = 1.5,
-    tol: float = 1e-7,
+    tol: float = 1e-5,
 ) -> ContactResult:
     """Point contact (ball) with equivalent radii ``rx_m``, ``ry_m`` (default ry = rx).
 
