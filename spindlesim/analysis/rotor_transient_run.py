@@ -36,6 +36,7 @@ class RotorTransientStudy:
     linearized_frequency_hz: np.ndarray  # modal at the static state
     linearized_whirl: tuple[str, ...]
     static_displacement_m: np.ndarray  # [2] at the record node
+    roller_pressure: object = None  # most loaded DTRB roller at the static state (RollerPressure) or None
 
 
 def nonlinear_bearings(rotor):
@@ -95,10 +96,17 @@ def solve_rotor_transient(deck, progress=None) -> RotorTransientStudy:
     poincare = xy[first::n_rev]
     static_xy = q_static[[rotor.dofs.index(node, "x"), rotor.dofs.index(node, "y")]]
     del system_matrices, load_vector
+    pressure = None
+    dtrb = next((b for b in nl if hasattr(b, "equilibrium") and hasattr(b, "geometry")), None)
+    if dtrb is not None and loads is not None and dtrb.name in loads:
+        from ..bearings.rolling.dtrb.roller_pressure import most_loaded_roller_pressure
+
+        pressure = most_loaded_roller_pressure(dtrb.geometry, dtrb.equilibrium(loads[dtrb.name], W))
     return RotorTransientStudy(
         transient=res, record_node=node, speed_rpm=rotor.speed_rpm, steps_per_revolution=n_rev,
         spectrum_frequency_hz=spec.frequency_hz, spectrum_amplitude_m=spec.amplitude, poincare_xy_m=poincare,
-        linearized_frequency_hz=modal.frequency_hz, linearized_whirl=modal.whirl, static_displacement_m=static_xy)
+        linearized_frequency_hz=modal.frequency_hz, linearized_whirl=modal.whirl, static_displacement_m=static_xy,
+        roller_pressure=pressure)
 
 
 def _with_bearings(rotor, bearings):
@@ -173,4 +181,16 @@ def run_rotor_transient(loaded, outdir: Path, run, opts, progress) -> list[Path]
     ax.legend(fontsize=8)
     ax.grid(True, alpha=0.3)
     paths.append(save_figure(fig, outdir / "transient_orbit.png"))
+    if st.roller_pressure is not None:
+        # most loaded roller at the static state, half-space solver (seed 001 eqs. 42-46)
+        from ..contact.analysis import write_contact
+        from ..contact.plots import pressure_map_figure, roller_profile_figure
+
+        rp = st.roller_pressure
+        paths.append(write_contact(outdir / "contact.h5", run, rp.contact, {
+            "source": "most loaded roller of the DTRB at the rotor's static equilibrium",
+            "row": rp.row + 1, "roller": rp.roller + 1, "tilt_rad": rp.tilt_rad}))
+        paths.append(save_figure(pressure_map_figure(rp.contact, f"Most loaded DTRB roller (row {rp.row + 1}), "
+                                                     f"Q = {rp.roller_load_N:.0f} N"), outdir / "contact_pressure.png"))
+        paths.append(save_figure(roller_profile_figure(rp.contact), outdir / "contact_roller.png"))
     return paths

@@ -65,7 +65,7 @@ def _solve_roller(sec: Any, load: float, nx: int, ny: int, opts: dict) -> Contac
     )
 
 
-def write_contact(path: Path, run: Any, res: ContactResult) -> Path:
+def write_contact(path: Path, run: Any, res: ContactResult, extra_attrs: dict | None = None) -> Path:
     """Write contact.h5: /contact/x_m, /contact/y_m, /contact/pressure_Pa [x, y] and more."""
     from ..output.hdf5 import write_h5
 
@@ -87,6 +87,7 @@ def write_contact(path: Path, run: Any, res: ContactResult) -> Path:
         "message": res.message,
         "grid": list(res.grid),
         "iterations": res.iterations,
+        **(extra_attrs or {}),
     }
     return write_h5(path, run, datasets, group_attrs={"/contact": attrs})
 

@@ -60,6 +60,12 @@ def _derived(f) -> dict[str, float]:
             i = int(np.argmax(np.where(sel, amp, -1)))
             out["transient/dominant_frequency_hz"] = float(freq[i])
             out["transient/dominant_amplitude_m"] = float(amp[i])
+    if "contact" in f and "max_pressure_Pa" in f["contact"].attrs:
+        g = f["contact"].attrs
+        singular = bool(g.get("edge_singular", False))
+        out["contact/edge_singular"] = float(singular)
+        # a sharp-edge peak is a grid value, not a stress: only converged maxima are reported as such
+        out["contact/converged_max_pressure_Pa"] = float("nan") if singular else float(g["max_pressure_Pa"])
     if "unbalance/response_m" in f:
         out["unbalance/max_amplitude_m"] = float(np.max(np.abs(f["unbalance/response_m"][()])))
     return out

@@ -60,3 +60,23 @@ def test_natural_frequency_rises_with_preload_and_crown_radius(key, values):
     """Seed 001 Figs. 15 and 19: the first natural frequency rises with preload and crowning radius."""
     f1 = [solve_modal(build_rotor(_deck(**{key: v})), n_modes=2).frequency_hz[0] for v in values]
     assert np.all(np.diff(f1) > 0), f1
+
+
+def test_transient_command_writes_roller_contact(tmp_path):
+    """`spindlesim transient` on the rotor deck also writes the most loaded roller's contact pressure."""
+    import h5py
+    from click.testing import CliRunner
+
+    from spindlesim.cli import main
+
+    deck = tmp_path / "rotor.yaml"
+    deck.write_text(DECK.read_text().replace("duration_s: 0.5", "duration_s: 0.02"))
+    res = CliRunner().invoke(main, ["transient", str(deck), "-o", str(tmp_path / "out")])
+    assert res.exit_code == 0, res.output
+    with h5py.File(tmp_path / "out" / "transient.h5") as f:
+        assert f["/transient/displacement_m"].shape[1] == 2
+        assert f["/transient"].attrs["model"] == "rotor"
+    with h5py.File(tmp_path / "out" / "contact.h5") as f:
+        g = f["/contact"]
+        assert g.attrs["row"] in (1, 2) and g.attrs["load_N"] > 1000
+        assert not g.attrs["edge_singular"]  # 2680 mm crown: the contact stays off the roller ends
