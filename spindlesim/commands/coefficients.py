@@ -11,11 +11,4 @@ from .common import deck_argument, outdir_option, run_and_report
 @click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Eight K/C coefficients at the thermal equilibrium of every three_lobe/plain bearing."""
-    from ..analysis.runner import analyses, register_analysis
-    from ..deck.sections import fluidfilm  # noqa: F401  (registers the bearing types)
-
-    if "coefficients" not in analyses():
-        from ..bearings.fluidfilm.runner import run_coefficients
-
-        register_analysis("coefficients", run_coefficients)
     run_and_report("coefficients", deck, outdir, "spindle", {"speed_rpm": speed_rpm})

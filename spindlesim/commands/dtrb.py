@@ -15,12 +15,5 @@ from .common import deck_argument, outdir_option, run_and_report
 @click.option("--no-sweeps", is_flag=True, default=False, help="Skip the preload and radial-load sweeps.")
 def command(deck, outdir, preload_um, speed_rpm, no_sweeps):
     """Load distribution per row, reactions, 5x5 stiffness; stiffness against preload and radial load."""
-    from ..analysis.runner import analyses, register_analysis
-    from ..deck.sections import dtrb as _dtrb_section  # noqa: F401  (registers the deck section)
-
-    if "dtrb" not in analyses():
-        from ..bearings.rolling.dtrb.run import run_dtrb
-
-        register_analysis("dtrb", run_dtrb)
     run_and_report("dtrb", deck, outdir, "dtrb",
                    {"preload_um": preload_um, "speed_rpm": speed_rpm, "sweeps": not no_sweeps})

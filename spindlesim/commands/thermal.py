@@ -11,11 +11,4 @@ from .common import deck_argument, outdir_option, run_and_report
 @click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Thermal equilibrium (seed 003 eqs. 4-14) of every three_lobe/plain bearing: thermal.h5."""
-    from ..analysis.runner import analyses, register_analysis
-    from ..deck.sections import fluidfilm  # noqa: F401  (registers the bearing types)
-
-    if "thermal" not in analyses():
-        from ..bearings.fluidfilm.runner import run_thermal
-
-        register_analysis("thermal", run_thermal)
     run_and_report("thermal", deck, outdir, "spindle", {"speed_rpm": speed_rpm})
