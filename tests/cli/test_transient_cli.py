@@ -45,7 +45,7 @@ def test_incomplete_result_is_written_and_marked(tmp_path):
     from spindlesim.output.hdf5 import RunInfo
     from tests.unit.test_rolling_transient_driver import Oscillator
 
-    res = run_transient(Oscillator(t_fail=0.26, fail="interrupt"), TransientSettings(0.5, sample_rate_hz=1000, chunks=10))
+    res = run_transient(Oscillator(t_fail=0.26, fail="interrupt"), TransientSettings(0.5, sample_rate_hz=1000, chunks=10, step_s=1e-4))
     path = write_transient(tmp_path / "transient.h5", RunInfo("deck", "<test>", "0" * 64), res)
     with h5py.File(path) as f:
         assert not bool(f.attrs["complete"])

@@ -65,3 +65,20 @@ def test_clearance_changes_regime():
         sel = f > 10
         return np.sum(a[sel & ~near] ** 2) / np.sum(a[sel] ** 2)
     assert off_harmonic_fraction(loose) > 10 * off_harmonic_fraction(tight)
+
+
+def test_number_of_rollers_changes_regime():
+    # Harsha and Kankar (2004) report that, with clearance, the regime (periodic, quasi-periodic, chaotic)
+    # changes with the number of rolling elements. Measured Poincare maps (1 s runs, steady half, points
+    # that differ by more than 2% of the peak-to-peak motion):
+    #   clearance 2 um: N = 5, 6, 7, 8, 9, 12, 16 non-periodic (36-57 clusters); N = 10 period-1
+    #   clearance 5 um: N = 5..12 non-periodic (39-73 clusters); N = 16 period-2
+    def clusters(rollers, clearance):
+        res = run(rollers, clearance=clearance, duration=1.0, settle=0.5)
+        assert res.complete
+        ptp = np.ptp(res.displacement_m[res.time_s >= res.settle_s], axis=0).max()
+        return distinct_points(res.poincare_xy_m, 0.02 * ptp)
+
+    assert clusters(10, 2e-6) == 1
+    assert clusters(8, 2e-6) > 10
+    assert clusters(16, 5e-6) == 2

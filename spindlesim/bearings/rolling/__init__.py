@@ -10,4 +10,6 @@
 - ``contact_search``: roller to outer race contact search (seed 000 eqs. 18-29).
 - ``contact_force``: compliant contact force with friction (seed 000 eqs. 30-31).
 - ``flexible_race``: the assembled seed 000 model.
+- ``rigid_race_kernel``, ``flexible_race_kernel``, ``rk4_parts``: the same
+  right-hand sides compiled with numba, and their fixed-step RK4 loops.
 """

@@ -57,16 +57,18 @@ def system_from_section(sec: Any, rollers: int | None = None, model: str | None 
         rc = CompliantContact(per_contact_stiffness(K, n), n, c.damping_Ns_m2, c.velocity_exponent,
                               c.indentation_exponent, c.friction, c.slip_regularisation_m_s)
         h = sec.housing
-        hc = CompliantContact(h.stiffness_N_m, 1.0, h.damping_Ns_m, 1.0, 0.0, h.friction, c.slip_regularisation_m_s)
-        system = FlexibleRaceModel(kin_f, n_roll, ring, rc, HousingSupport(hc, 0.0, h.tangential_stiffness_N_m),
+        arc = 2.0 * np.pi * r_h / ring.segments  # each segment's share of the bore
+        hc = CompliantContact(h.stiffness_N_m2 * arc, 1.0, h.damping_Ns_m2 * arc, 1.0, 0.0, h.friction,
+                              c.slip_regularisation_m_s)
+        support = HousingSupport(hc, 0.0, h.tangential_stiffness_N_m2 * arc,
+                                 rocking_arc_m=arc if h.surface_contact else 0.0)
+        system = FlexibleRaceModel(kin_f, n_roll, ring, rc, support,
                                    omega, sec.shaft.mass_kg, damping, load, b.width_mm * 1e-3, b.density_kg_m3)
     else:
         raise ValueError(f"unknown transient model {which!r}")
     it = sec.integrator
-    # model defaults: explicit RK45 at 1e-5 was measured fastest for the flexible race (stiff
-    # segment and roller modes, ~1 us steps); DOP853 at 1e-7 for the smooth 2-DOF rigid race
-    method = it.method or ("RK45" if which == "flexible_race" else "DOP853")
     rtol = it.rtol or (1e-5 if which == "flexible_race" else 1e-7)
     settings = TransientSettings(T, settle_s=sec.settle_s if sec.settle_s is not None and sec.settle_s < T else None,
-                                 sample_rate_hz=it.sample_rate_hz, method=method, rtol=rtol, chunks=it.chunks)
+                                 sample_rate_hz=it.sample_rate_hz, method=it.method,
+                                 step_s=it.step_us * 1e-6 if it.step_us else None, rtol=rtol, chunks=it.chunks)
     return system, settings

@@ -39,7 +39,8 @@ def write_transient(path: Path, run: Any, res: TransientResult) -> Path:
                             "roller_pass_frequency_hz": res.roller_pass_frequency_hz, "model": res.model,
                             "settle_s": res.settle_s, "sample_rate_hz": res.sample_rate_hz,
                             "complete": res.complete, "incomplete_reason": res.reason,
-                            "t_reached_s": res.t_reached_s, "wall_time_s": res.wall_time_s}}
+                            "t_reached_s": res.t_reached_s, "wall_time_s": res.wall_time_s,
+                            "integrator": res.method, "step_s": res.step_s}}
     return write_h5(path, run, data, attrs)
 
 

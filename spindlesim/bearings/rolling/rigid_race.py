@@ -192,6 +192,17 @@ class RigidRaceRotor:
         out[3] = (f[1] - c * s[3] - q @ np.sin(th)) / m
         return out
 
+    def compiled_stepper(self):
+        """Compiled RK4 loop with this rotor's parameters (``rigid_race_kernel``; ``fixed_step.Stepper``)."""
+        from . import rigid_race_kernel as kernel
+
+        params = kernel.pack(self)
+        return lambda y, t0, h, n, every, samples: kernel.rk4(y, t0, h, n, every, *params, samples)
+
+    def default_step_s(self, y: np.ndarray) -> float:
+        """1 us: the accuracy issue 4 asks for (RK4 with a 1 us step)."""
+        return 1e-6
+
     def shaft_displacement(self, Y: np.ndarray) -> np.ndarray:
         """[t, 2] shaft centre (x, y) from states [t, n_state]."""
         return Y[:, 0:2]

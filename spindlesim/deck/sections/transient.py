@@ -54,10 +54,20 @@ class TransientContact(DeckModel):
 
 
 class TransientHousing(DeckModel):
-    stiffness_N_m: PositiveFloat = 1e9  # per segment
-    damping_Ns_m: NonNegFloat = 170.0  # per segment, ~5% of critical for a segment on its support
-    tangential_stiffness_N_m: NonNegFloat = 1e7
+    """Outer race on the housing bore (seed 000 "surface contact"), per metre of bore circumference.
+
+    Each segment gets these times its arc on the housing radius, so the support does not change
+    with the number of segments.  Seed 000 gives no values; defaults: 1.2e11 N/m^2 (1e9 N/m on each
+    of 12 segments, stiffer than a roller contact, ~1.5e8 N/m) and damping ~5% of critical per segment.
+    """
+
+    stiffness_N_m2: PositiveFloat = 1.2e11
+    damping_Ns_m2: NonNegFloat = 2.0e4
+    tangential_stiffness_N_m2: NonNegFloat = 1.2e9
     friction: NonNegFloat = 0.0
+    # the segment's outer face sits on the bore (seed 000 "surface contact"): it resists rocking with
+    # k s^2/12, s the segment's arc on the housing radius; false = point support (no rocking stiffness)
+    surface_contact: bool = True
 
 
 class TransientWaviness(DeckModel):
@@ -68,8 +78,12 @@ class TransientWaviness(DeckModel):
 
 
 class TransientIntegrator(DeckModel):
-    # defaults by model: rigid_race DOP853 / 1e-7; flexible_race RK45 / 1e-5 (measured fastest)
-    method: Optional[Literal["RK45", "DOP853", "LSODA", "BDF", "Radau"]] = None
+    # RK4: compiled fixed-step RK4 (default); the others are scipy's adaptive solve_ivp methods on the
+    # numpy right-hand side (slow: a cross-check).  step_us bounds the RK4 step (default: 1 us for the
+    # rigid race, the stability limit for the flexible race); rtol is for the adaptive methods
+    # (default 1e-7 rigid race, 1e-5 flexible race).
+    method: Literal["RK4", "RK45", "DOP853", "LSODA", "BDF", "Radau"] = "RK4"
+    step_us: Optional[PositiveFloat] = None
     rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None
     sample_rate_hz: Optional[PositiveFloat] = None
     chunks: Annotated[int, Field(ge=1, le=100000)] = 40
