@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from spindlesim.bearings.rolling.dtrb import DtrbBearing, dtrb_geometry
+from spindlesim.bearings.dtrb import DtrbBearing, dtrb_geometry
 
 D = np.array([3e-6, -2e-6, 1.5e-5, 4e-5, -6e-5])
 TARGET_MS = 1.0

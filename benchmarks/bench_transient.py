@@ -1,16 +1,18 @@
-"""Transient benchmark (issue 4): wall time per simulated second for both bearing models.
+"""Transient benchmark: the one engine on seed 000's rig and on FE rotors.
 
-    python benchmarks/bench_transient.py [--duration 1.0] [--rollers 5 8 12]
+    python benchmarks/bench_transient.py [--duration 1.0] [--rollers 5 8 12] [--no-process] [--no-rotor]
 
-Prints two tables.  1. Integration (compiled RK4 kernels, after compilation):
-model, rollers, step, simulated seconds, wall time of the integration alone and
-of the whole ``run_transient`` (static equilibrium, step choice, post-processing),
-and the dominant spectral line against N f_cage.  2. The whole process
-``spindlesim transient --rollers 8 --duration 0.5`` with the compiled kernels
-cached on disk, and once with the cache cleared (compilation included).
-Targets (issue 4): rigid race 8 rollers 1 s < 1 s wall; flexible race 12 rollers
-x 12 segments 1 s < 10 s wall; the process < 20 s.  Not a test; numbers depend
-on the machine.
+1. Seed 000's rig (rigid journal in the roller bearing), explicit RK4 with compiled forces:
+   model, rollers, step, simulated seconds, wall time of the integration alone (compiled loop)
+   and of the whole ``simulate`` (static equilibrium, step choice, outputs), and the dominant
+   spectral line against N f_cage.  Target: rigid race, 8 rollers, 1 s simulated at h = 1 us, no
+   slower than the previous dedicated kernel (0.62 s on the reference machine; measured side by
+   side with ``--old DIR``, a checkout of that version).
+2. FE rotors with Newmark: the seed 003 spindle (104 DOF) on two 3-lobe bearings, 0.1 s at a step
+   resolving 5 kHz (target: under 60 s on one core), and the seed 001 rotor on its DTRB.
+3. The whole process ``spindlesim transient --rollers 8 --duration 0.5`` with the compiled code
+   cached on disk, and once with the cache cleared (compilation included).
+Not a test; numbers depend on the machine.
 """
 
 from __future__ import annotations
@@ -24,26 +26,45 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
-from spindlesim.analysis.fixed_step import plan_steps
-from spindlesim.analysis.transient import run_transient
-from spindlesim.bearings.rolling.build import system_from_section
-from spindlesim.deck.sections.transient import TransientSection
+ROOT = Path(__file__).resolve().parents[1]
 
 
-def integration_only(system, settings) -> tuple[float, float]:
-    """(wall s, step s) of the compiled RK4 loop alone over settings.duration_s."""
-    y = system.initial_state()
-    h_max = system.default_step_s(y)
-    plan = plan_steps(settings.duration_s, h_max, 50 * system.roller_pass_frequency_hz,
-                      system.roller_pass_frequency_hz)
-    stepper = system.compiled_stepper()
-    stepper(y.copy(), 0.0, plan.step_s, plan.steps_per_sample, plan.steps_per_sample, np.empty((1, y.size)))
-    samples = np.empty((plan.n_samples, y.size))
+def kernel_time(rotor, settings) -> tuple[float, float]:
+    """(wall s, step s) of the compiled RK4 loop alone (after compilation)."""
+    from spindlesim.analysis.transient.engine import integrate, prepare
+
+    p = prepare(rotor, settings)
+    import dataclasses
+
+    short = prepare(rotor, dataclasses.replace(settings, duration_s=1e-3, settle_s=0.0))
+    integrate(short, settings)  # compile
     w0 = time.perf_counter()
-    stepper(y, 0.0, plan.step_s, plan.n_samples * plan.steps_per_sample, plan.steps_per_sample, samples)
-    return time.perf_counter() - w0, plan.step_s
+    integrate(p, settings)
+    return time.perf_counter() - w0, p.plan.step_s
+
+
+def old_kernel_time(old: Path, T: float) -> float | None:
+    """The previous version's dedicated rigid-race kernel, 8 rollers, T simulated at h <= 1 us."""
+    code = f"""
+import sys, time, numpy as np
+sys.path.insert(0, {str(old)!r})
+from spindlesim.deck import default_deck
+from spindlesim.bearings.rolling.build import system_from_section
+from spindlesim.analysis.fixed_step import plan_steps
+s, _ = system_from_section(default_deck("transient").deck.transient, rollers=8, model="rigid_race", duration_s={T})
+st = s.compiled_stepper()
+p = plan_steps({T}, 1e-6, 50 * s.roller_pass_frequency_hz, s.roller_pass_frequency_hz)
+y = s.initial_state()
+out = np.empty((p.n_samples, 4))
+st(y.copy(), 0.0, p.step_s, 100, p.steps_per_sample, out)
+w = time.perf_counter(); st(y, 0.0, p.step_s, p.n_samples * p.steps_per_sample, p.steps_per_sample, out)
+print(time.perf_counter() - w)
+"""
+    try:
+        r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd="/")
+        return float(r.stdout.split()[-1])
+    except (subprocess.CalledProcessError, ValueError, IndexError):
+        return None
 
 
 def process_time(args: list[str], env: dict) -> float:
@@ -55,28 +76,72 @@ def process_time(args: list[str], env: dict) -> float:
         return time.perf_counter() - w0
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--duration", type=float, default=1.0)
-    ap.add_argument("--rollers", type=int, nargs="+", default=[5, 8, 12])
-    ap.add_argument("--no-process", action="store_true", help="skip the whole-process timings")
-    args = ap.parse_args()
-    sec = TransientSection()
+def rig(args) -> None:
+    from spindlesim.analysis.transient.engine import TransientSettings, simulate
+    from spindlesim.bearings.roller.section import TransientSection
+    from spindlesim.model.rig import rig_rotor
+
     T = args.duration
     print(f"{'model':<14} {'rollers':>7} {'step [us]':>9} {'sim [s]':>8} {'kernel [s]':>10} {'run [s]':>8} "
           f"{'N f_cage [Hz]':>13} {'peak x [Hz]':>11} {'peak y [Hz]':>11} {'bin [Hz]':>8}")
     for model in ("rigid_race", "flexible_race"):
         for n in args.rollers:
-            system, settings = system_from_section(sec, rollers=n, model=model, duration_s=T)
-            kernel, h = integration_only(system, settings)
+            rotor = rig_rotor(TransientSection(model=model), rollers=n)
+            settings = TransientSettings(T, method="rk4", settle_s=0.4 * T)
+            kernel, h = kernel_time(rotor, settings)
             w0 = time.perf_counter()
-            res = run_transient(system, settings)
+            res = simulate(rotor, settings)
             wall = time.perf_counter() - w0
             sp = res.spectrum
             px, py = sp.dominant_frequency_hz(0, 20.0), sp.dominant_frequency_hz(1, 20.0)
             print(f"{model:<14} {n:>7d} {h * 1e6:>9.3f} {T:>8.3g} {kernel:>10.2f} {wall:>8.2f} "
-                  f"{res.roller_pass_frequency_hz:>13.2f} {px:>11.2f} {py:>11.2f} {sp.resolution_hz:>8.2f}"
-                  + ("" if res.complete else f"  INCOMPLETE: {res.reason}"))
+                  f"{res.frequencies_hz['bearing.roller_pass']:>13.2f} {px:>11.2f} {py:>11.2f} "
+                  f"{sp.resolution_hz:>8.2f}" + ("" if res.complete else f"  INCOMPLETE: {res.reason}"))
+    if args.old:
+        old = old_kernel_time(Path(args.old), T)
+        print(f"previous dedicated rigid-race kernel, 8 rollers, same machine: "
+              f"{old:.2f} s" if old is not None else "previous kernel: not available")
+
+
+def rotors() -> None:
+    from spindlesim.analysis.transient.engine import TransientSettings, simulate
+    from spindlesim.deck import default_deck, load_deck
+    from spindlesim.model.build import build_rotor
+    from spindlesim.runs.transient import rotor_setup
+
+    print(f"\n{'rotor':<40} {'DOF':>4} {'step [us]':>9} {'sim [s]':>8} {'wall [s]':>8} {'Newton/step':>11}")
+    d = default_deck("spindle").deck  # seed 003 spindle, two 3-lobe bearings
+    rotor = build_rotor(d)
+    from spindlesim.analysis.transient.engine import Perturbation
+
+    s = TransientSettings(0.1, step_s=1 / (5000 * 20), settle_s=0.02,
+                          perturbation=Perturbation(rotor.dofs.index(0, "x"), 50.0))
+    w0 = time.perf_counter()
+    res = simulate(rotor, s)
+    wall = time.perf_counter() - w0
+    print(f"{'seed 003 spindle, 3-lobe bearings (newmark)':<40} {rotor.dofs.size:>4d} {res.step_s * 1e6:>9.2f} "
+          f"{0.1:>8.3g} {wall:>8.2f} {res.newton_iterations[1:].mean():>11.2f}"
+          + ("" if res.complete else f"  INCOMPLETE: {res.reason}"))
+    deck = load_deck(ROOT / "decks" / "seed001_dtrb_rotor.yaml").deck
+    rotor, settings = rotor_setup(deck, {})
+    w0 = time.perf_counter()
+    res = simulate(rotor, settings)
+    wall = time.perf_counter() - w0
+    print(f"{'seed 001 rotor on its DTRB (newmark)':<40} {rotor.dofs.size:>4d} {res.step_s * 1e6:>9.2f} "
+          f"{settings.duration_s:>8.3g} {wall:>8.2f} {res.newton_iterations[1:].mean():>11.2f}")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--duration", type=float, default=1.0)
+    ap.add_argument("--rollers", type=int, nargs="+", default=[5, 8, 12])
+    ap.add_argument("--old", default=None, help="a checkout of the previous version (dedicated kernels)")
+    ap.add_argument("--no-process", action="store_true", help="skip the whole-process timings")
+    ap.add_argument("--no-rotor", action="store_true", help="skip the FE rotor timings")
+    args = ap.parse_args()
+    rig(args)
+    if not args.no_rotor:
+        rotors()
     if args.no_process:
         return
     cmd = ["transient", "--rollers", "8", "--duration", "0.5"]

@@ -16,10 +16,11 @@ from typing import Callable
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from ..fe.assembly import assemble_shaft, system_matrices
+from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
-from ..results import CampbellResult
 from .modal import modal_from_matrices
+from .operating import system_matrices
+from .results import CampbellResult
 
 log = logging.getLogger(__name__)
 
@@ -83,7 +84,7 @@ def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int):
     from concurrent.futures import ThreadPoolExecutor
 
     def one(s: float):
-        sysm = system_matrices(rotor, shaft, s * np.pi / 30)
+        sysm = system_matrices(rotor, s, shaft=shaft)
         return modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes, s)
 
     workers = min(len(speeds), os.cpu_count() or 1)

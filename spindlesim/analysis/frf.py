@@ -17,10 +17,11 @@ import logging
 import numpy as np
 import scipy.linalg as sla
 
-from ..fe.assembly import assemble_shaft, system_matrices
+from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
-from ..results import FrfResult, UnbalanceResult
 from .modal import state_matrix
+from .operating import system_matrices
+from .results import FrfResult, UnbalanceResult
 
 log = logging.getLogger(__name__)
 _COND_LIMIT = 1e10
@@ -49,8 +50,7 @@ def solve_frf(rotor: Rotor, frequencies_hz: np.ndarray, input_node: int, input_d
               output_node: int, output_dof: str, speed_rpm: float | None = None) -> FrfResult:
     """Receptance between (1-based) input and output node/DOF at the rotor speed."""
     speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
-    shaft = assemble_shaft(rotor)
-    sysm = system_matrices(rotor, shaft, speed * np.pi / 30)
+    sysm = system_matrices(rotor, speed)
     f = np.asarray(frequencies_hz, float)
     h = receptance(sysm, rotor.dofs.index(output_node - 1, output_dof),
                    rotor.dofs.index(input_node - 1, input_dof), 2 * np.pi * f)
@@ -73,7 +73,7 @@ def solve_unbalance(rotor: Rotor, speeds_rpm: np.ndarray, node: int, unbalance_k
     ix, iy = rotor.dofs.index(node - 1, "x"), rotor.dofs.index(node - 1, "y")
     for k, s in enumerate(speeds):
         W = s * np.pi / 30
-        sysm = system_matrices(rotor, shaft, W)
+        sysm = system_matrices(rotor, s, shaft=shaft)
         F = np.zeros(sysm.size, complex)
         amp = unbalance_kg_m * W**2 * np.exp(1j * np.deg2rad(phase_deg))
         F[ix], F[iy] = amp, -1j * amp

@@ -17,10 +17,10 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg as sla
 
-from ..fe.assembly import SystemMatrices, assemble_shaft, system_matrices
 from ..model.dofs import DOFS_4
 from ..model.rotor import Rotor
-from ..results import ModalResult
+from .operating import SystemMatrices, system_matrices
+from .results import ModalResult
 
 RIGID_BODY_RAD_S = 1e-3 * 2 * np.pi  # roots below 1 mHz are rigid-body roots
 OVERDAMPED_ZETA = 0.999  # damping ratio at or above this: reported with the overdamped roots
@@ -55,7 +55,6 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
                         speed_rpm: float) -> ModalResult:
     """Modes of assembled matrices; ``dofs`` is the rotor's DofMap (mode shapes keep x, y, theta_x, theta_y)."""
     n_nodes = dofs.n_nodes
-    lateral = [dofs.names.index(d) for d in DOFS_4]
     A = state_matrix(sysm)
     # numpy's geev wrapper releases the GIL (scipy's does not), so Campbell sweeps can use threads
     lam, vec = np.linalg.eig(A)
@@ -67,7 +66,11 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     osc = (~rigid) & (~real) & (lam.imag > 0)
     order = np.flatnonzero(osc)[np.argsort(lam.imag[osc])][:n_modes]
     lam_m = lam[order]
-    shapes = vec[:n, order].T.reshape(len(order), n_nodes, -1)[:, :, lateral]
+    per_node = vec[:n, order].T.reshape(len(order), n_nodes, -1)
+    shapes = np.zeros((len(order), n_nodes, 4), complex)  # (x, y, theta_x, theta_y); absent DOFs stay 0
+    for k, d in enumerate(DOFS_4):
+        if d in dofs.names:
+            shapes[:, :, k] = per_node[:, :, dofs.names.index(d)]
     # normalise: largest translation becomes 1 + 0j
     trans = shapes[:, :, :2].reshape(len(order), -1)
     ref = trans[np.arange(len(order)), np.argmax(np.abs(trans), axis=1)]
@@ -84,8 +87,8 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
 
 
 def solve_modal(rotor: Rotor, speed_rpm: float | None = None, n_modes: int = 8, shaft=None) -> ModalResult:
-    """Damped modes of the rotor at ``speed_rpm`` (default: the deck's operating speed)."""
+    """Damped modes of the rotor at ``speed_rpm`` (default: the deck's operating speed), bearings
+    linearised at the static equilibrium of that speed."""
     speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
-    shaft = assemble_shaft(rotor) if shaft is None else shaft
-    sysm = system_matrices(rotor, shaft, speed * np.pi / 30)
+    sysm = system_matrices(rotor, speed, shaft=shaft)
     return modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes, speed)

@@ -1,46 +1,179 @@
-"""The one bearing protocol every analysis uses (docs/decisions.md, DESIGN.md section 3).
+"""The bearing contract: what every bearing is and answers, written once (DESIGN.md section 3).
 
-Frame: x horizontal, y vertical (gravity along -y), shaft spin about +z, so a
-positive speed turns x towards y. Coefficient matrices act on the bearing
-node's translations (x, y): the force the bearing exerts on the shaft is
-``f = -(K q + C q')``.
+Every analysis (static equilibrium, modal, Campbell, FRF, unbalance, chatter, transient) talks to
+its bearings through this contract and nothing else: no analysis asks which kind of bearing it
+holds or probes its attributes.  A bearing family implements it in its own folder
+(``bearings/<family>/``); :class:`BearingBase` gives the defaults of the optional parts.
+
+Frame and signs
+---------------
+x horizontal, y vertical (gravity along -y), z along the shaft; the shaft spins about +z, so a
+positive speed turns x towards y.  Node DOFs are named from ("x", "y", "z", "theta_x",
+"theta_y"); theta_x and theta_y are rotations about +x and +y.  Forces and moments are those
+the bearing exerts ON THE SHAFT; a stiffness is minus the derivative of that force.
+
+Attributes
+----------
+name : str
+    The deck's name of the bearing (unique in a rotor).
+node : int
+    0-based shaft node the bearing acts on.
+dof_names : tuple[str, ...]
+    The node DOFs it acts on, in the order of q, f and the matrices: ("x", "y") for a radial
+    bearing, ("x", "y", "z", "theta_x", "theta_y") for one that also carries axial load and
+    tilt (DTRB, ball bearing sets).
+internal_mass : np.ndarray
+    Mass (or inertia) of each of the bearing's own dynamic DOFs, e.g. the rollers and
+    outer-race segments of a flexible-race roller bearing; empty for most bearings.  They
+    follow the node DOFs in q, v, f and the tangents; the transient engine integrates them
+    with the rotor, every other analysis condenses them out (through ``linearized``).
+
+Methods
+-------
+force_and_tangent(q, v, t, speed, angle=None) -> (f, K_t, C_t)
+    The nonlinear reaction.  q, v: displacement [m, rad] and velocity of the node DOFs
+    (``dof_names`` order, measured from the bearing's centre) followed by the internal DOFs;
+    t: time [s]; speed: shaft speed [rad/s]; angle: shaft rotation angle [rad] at t (default
+    speed * t; a speed ramp passes the integral).  f: force on the shaft (and on the internal
+    DOFs); K_t = -df/dq and C_t = -df/dv, square of the size of q.  Used by the one static
+    equilibrium solver and by the transient engine.
+linearized(speed, static_load) -> (K, C)
+    Stiffness [N/m, N/rad, N m/rad] and damping coefficients on ``dof_names`` at the operating
+    point: ``static_load`` is what the shaft puts on the bearing at static equilibrium
+    (= -f there), on ``dof_names``.  Used by static, modal, Campbell, FRF, unbalance, chatter.
+    For a bearing whose reaction does not vary in time this equals the tangent of
+    ``force_and_tangent`` at the displacement that carries ``static_load``; a rolling bearing
+    returns that tangent averaged over one rolling-element pitch.
+static_displacement(speed, static_load) -> q
+    The displacement (node DOFs followed by internal DOFs) at which the bearing alone carries
+    ``static_load``: the start of the rotor's static equilibrium, exact for a statically
+    determinate rotor.  The default solves the linearised bearing.
+at_operating_point(speed, static_load) -> bearing
+    The same bearing with everything the operating point sets held fixed (a fluid film: the
+    viscosity of its thermal equilibrium), for a nonlinear analysis about that point (static
+    equilibrium, transient).  Bearings with no such quantity return themselves.
+frequencies_hz(speed) -> dict[str, float]
+    Characteristic excitation frequencies, e.g. {"cage": .., "roller_pass": ..}: the transient
+    samples a Poincare map once per period of each and marks them on its spectrum.
+compiled() -> CompiledForce
+    Parameters of the bearing's compiled force (``bearings.compiled``), for the transient
+    engine's explicit integrator.  Raises NotImplementedError for bearings without one.
+outputs(q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]
+    What a transient records for this bearing at a sampled state, name -> (value, units): always
+    "force" (the reaction on the node DOFs, as in ``force_and_tangent``), and what the family
+    adds, e.g. {"roller_load_N": (Q_j, "N")}.  The default evaluates ``force_and_tangent``.
+
+The speed is always passed in, never stored on the bearing, so one bearing object serves every
+speed of a Campbell diagram and every instant of a run-up.
 """
 
 from __future__ import annotations
 
-from typing import Protocol, runtime_checkable
+from dataclasses import dataclass
+from typing import Callable, Protocol, runtime_checkable
 
 import numpy as np
 
-
-@runtime_checkable
-class LinearizedBearing(Protocol):
-    """A bearing that can be linearised about an operating point."""
-
-    name: str
-    node: int  # 0-based node index on the shaft
-
-    def linearized(
-        self, speed_rad_s: float, static_load_N: np.ndarray | None = None
-    ) -> tuple[np.ndarray, np.ndarray]:
-        """Return (K [2x2] N/m, C [2x2] N s/m) in the (x, y) frame.
-
-        ``static_load_N`` is the (x, y) force the shaft puts on the bearing at
-        static equilibrium, for bearings whose coefficients depend on load;
-        bearings with a load of their own in the deck use that instead.
-        """
-        ...
+RADIAL = ("x", "y")
+FIVE = ("x", "y", "z", "theta_x", "theta_y")
 
 
 @runtime_checkable
-class NonlinearBearing(Protocol):
-    """A bearing that gives reaction forces for a state (transient, nonlinear static)."""
+class Bearing(Protocol):
+    """The contract of the module docstring (static type checking and documentation)."""
 
     name: str
     node: int
+    dof_names: tuple[str, ...]
+    internal_mass: np.ndarray
 
-    def force(
-        self, displacement_m: np.ndarray, velocity_m_s: np.ndarray, t_s: float
-    ) -> np.ndarray:
-        """Force [N] the bearing exerts on the shaft at the node, (x, y)."""
-        ...
+    def force_and_tangent(self, q: np.ndarray, v: np.ndarray, t: float, speed: float,
+                          angle: float | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
+
+    def linearized(self, speed: float, static_load: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]: ...
+
+    def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray: ...
+
+    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None) -> "Bearing": ...
+
+    def frequencies_hz(self, speed: float) -> dict[str, float]: ...
+
+    def compiled(self) -> "CompiledForce": ...
+
+    def outputs(self, q: np.ndarray, v: np.ndarray, t: float, speed: float,
+                angle: float | None = None) -> dict[str, tuple[np.ndarray, str]]: ...
+
+
+@dataclass(frozen=True)
+class CompiledForce:
+    """A bearing's compiled force: ``kind`` selects the kernel in ``bearings.compiled``; the
+    kernel reads its parameters from ``floats`` and ``ints``."""
+
+    kind: int
+    floats: np.ndarray
+    ints: np.ndarray
+
+
+class BearingBase:
+    """Defaults of the optional parts of the contract; a family overrides what applies to it."""
+
+    internal_mass: np.ndarray = np.zeros(0)
+
+    def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
+        n = len(self.dof_names)
+        q = np.zeros(n + self.internal_mass.size)
+        if static_load is not None and np.any(static_load):
+            K, _ = self.linearized(speed, static_load)
+            q[:n] = np.linalg.lstsq(K, np.asarray(static_load, float)[:n], rcond=None)[0]
+        return q
+
+    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None):
+        return self
+
+    def frequencies_hz(self, speed: float) -> dict[str, float]:
+        return {}
+
+    def compiled(self) -> CompiledForce:
+        raise NotImplementedError(
+            f"bearing {getattr(self, 'name', '?')!r} has no compiled force; integrate with method newmark")
+
+    def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
+        f = self.force_and_tangent(q, v, t, speed, angle)[0]
+        return {"force": (f[: len(self.dof_names)], force_units(self.dof_names))}
+
+
+def force_units(dof_names: tuple[str, ...]) -> str:
+    """Units of a force vector on ``dof_names``: N for translations, N m for rotations."""
+    return ", ".join("N m" if d.startswith("theta") else "N" for d in dof_names)
+
+
+def shaft_angle(speed: float, t: float, angle: float | None) -> float:
+    """The shaft angle the contract passes: ``angle`` when given, else speed * t."""
+    return speed * t if angle is None else angle
+
+
+def tangent_by_differences(force: Callable[[np.ndarray, np.ndarray], np.ndarray], q: np.ndarray,
+                           v: np.ndarray, dq: float | np.ndarray, dv: float | np.ndarray | None = None
+                           ) -> tuple[np.ndarray, np.ndarray]:
+    """(K_t, C_t) = (-df/dq, -df/dv) by central differences of ``force(q, v)``.
+
+    For models that give only a force (the contract allows it); ``dq`` and ``dv`` are the
+    steps (scalars or one per DOF); ``dv=None`` skips the velocity (C_t = 0).
+    """
+    q = np.asarray(q, float)
+    v = np.asarray(v, float)
+    n = q.size
+    hq = np.broadcast_to(np.asarray(dq, float), (n,))
+    K = np.empty((n, n))
+    for k in range(n):
+        e = np.zeros(n)
+        e[k] = hq[k]
+        K[:, k] = -(force(q + e, v) - force(q - e, v)) / (2.0 * hq[k])
+    C = np.zeros((n, n))
+    if dv is not None:
+        hv = np.broadcast_to(np.asarray(dv, float), (n,))
+        for k in range(n):
+            e = np.zeros(n)
+            e[k] = hv[k]
+            C[:, k] = -(force(q, v + e) - force(q, v - e)) / (2.0 * hv[k])
+    return K, C

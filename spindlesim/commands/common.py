@@ -63,7 +63,7 @@ def progress_reporter(label: str) -> tuple[Callable[[int, int], None], Callable[
 
 def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
     """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks."""
-    from ..analysis.runner import run_analysis, run_info_for
+    from ..runs import run_analysis, run_info_for
     from ..deck import DeckError
 
     loaded = load_or_default(deck, default_name)

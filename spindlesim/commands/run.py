@@ -12,7 +12,7 @@ def command(deck, outdir):
     """Every analysis the deck lists (key 'analyses'), or static, modal, campbell, frf (and unbalance)."""
     import numpy as np
 
-    from ..analysis.runner import default_analyses, run_analysis, run_info_for
+    from ..runs import default_analyses, run_analysis, run_info_for
     from ..deck import DeckError
     from .common import report_deck_error
 

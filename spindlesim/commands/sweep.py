@@ -24,7 +24,7 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     """Run ANALYSIS for every case of a parameter study; resumable, one HDF5 per case plus sweep.h5."""
     from pathlib import Path
 
-    from ..analysis.runner import analyses, run_info_for
+    from ..runs import analyses, run_info_for
     from ..deck import DeckError, parse_deck
     from ..sweep import build_cases, parse_set_option, run_sweep
     from ..sweep.cases import parse_values

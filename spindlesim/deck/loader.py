@@ -10,12 +10,13 @@ from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
-from . import sections  # noqa: F401  (registers contributed bearing types and sections)
 from .errors import DeckError, DeckIssue
-from .schema import deck_model
+from .document import bearing_types, deck_model
 from .yamlmarks import load_with_marks, locate
 
-ANALYSES = ("static", "modal", "campbell", "frf", "unbalance")
+#: every analysis a deck may list under ``analyses:`` (``spindlesim.runs.RUNS`` runs them)
+ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient", "rotor_transient", "thermal",
+            "coefficients", "dtrb", "contact")
 
 
 @dataclass(frozen=True)
@@ -50,8 +51,6 @@ def _data_path(data: Any, loc: tuple[Any, ...]) -> tuple[Any, ...]:
     Union tags (a bearing type name, ``FrequencyRange``, ``list[...]``) that
     pydantic inserts are skipped; a missing or unknown key ends the path.
     """
-    from .schema import bearing_types
-
     path: list[Any] = []
     cur = data
     for item in loc:
@@ -77,8 +76,6 @@ def _message(err: dict[str, Any]) -> str:
     if kind == "missing":
         return "required key is missing"
     if kind == "union_tag_invalid":
-        from .schema import bearing_types
-
         return f"unknown type; expected one of {', '.join(sorted(bearing_types()))}"
     msg = err["msg"]
     if "input" in err and kind.endswith("_type"):
@@ -104,13 +101,14 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
                 bad.append((("shaft", "elements", i, j), f"{names[j]} must be > 0, got {val}"))
         if di >= do and do > 0:
             bad.append((("shaft", "elements", i, 1), f"inner_dia_mm {di} must be smaller than outer_dia_mm {do}"))
-    n_nodes = len(rows) + 1
+    n_nodes = len(rows) + 1 if d.shaft is not None else 1
+    has_rotor = d.shaft is not None or d.journal is not None
 
     def node_ok(path: tuple[Any, ...], node: int) -> None:
-        if d.shaft is None:
+        if not has_rotor:
             return  # reported by require_rotor() when a rotor analysis runs
         if node > n_nodes:
-            bad.append((path, f"node {node} is out of range: the shaft has nodes 1..{n_nodes}"))
+            bad.append((path, f"node {node} is out of range: the rotor has nodes 1..{n_nodes}"))
 
     for i, disk in enumerate(d.disks):
         node_ok(("disks", i, "node"), disk.node)
@@ -120,17 +118,6 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
         if b.name in seen:
             bad.append((("bearings", i, "name"), f"duplicate bearing name {b.name!r} (also bearings[{seen[b.name]}])"))
         seen[b.name] = i
-        if getattr(b, "type", None) == "linear":
-            if b.table is None and b.K_N_m is None:
-                bad.append((("bearings", i), "a linear bearing needs K_N_m (and C_Ns_m) or a table"))
-            if b.table is not None:
-                t = b.table
-                n = len(t.speed_rpm)
-                if list(t.speed_rpm) != sorted(t.speed_rpm) or len(set(t.speed_rpm)) != n:
-                    bad.append((("bearings", i, "table", "speed_rpm"), "speeds must be strictly increasing"))
-                for key in ("K_N_m", "C_Ns_m"):
-                    if len(getattr(t, key)) != n:
-                        bad.append((("bearings", i, "table", key), f"needs {n} matrices, one per speed, got {len(getattr(t, key))}"))
     for i, load in enumerate(d.loads):
         node_ok(("loads", i, "node"), load.node)
     for sec, keys in (("static", ("stiffness_at",)), ("frf", ("input", "output"))):
@@ -145,24 +132,35 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     sp = d.campbell.speeds_rpm
     if sp.stop <= sp.start:
         bad.append((("campbell", "speeds_rpm", "stop"), "stop must be greater than start"))
+    if d.shaft is not None and d.journal is not None:
+        bad.append((("journal",), "give either shaft (a flexible rotor) or journal (a rigid journal), not both"))
+    rt = d.rotor_transient
+    if rt is not None:
+        for path, node in ((("rotor_transient", "record_node"), rt.record_node),
+                           (("rotor_transient", "perturbation", "node"), rt.perturbation and rt.perturbation.node)):
+            if node is not None:
+                node_ok(path, node)
+        for i, load in enumerate(rt.loads):
+            node_ok(("rotor_transient", "loads", i, "node"), load.node)
     if d.analyses is not None:
         for i, name in enumerate(d.analyses):
-            if name not in available_analyses():
-                bad.append((("analyses", i), f"unknown analysis {name!r}; known: {', '.join(available_analyses())}"))
+            if name not in ANALYSES:
+                bad.append((("analyses", i), f"unknown analysis {name!r}; known: {', '.join(ANALYSES)}"))
     return bad
 
 
 def require_rotor(loaded: LoadedDeck, analysis: str) -> None:
-    """Rotor analyses need ``shaft`` and ``operating``; raise a located DeckError otherwise."""
-    missing = [k for k in ("shaft", "operating") if getattr(loaded.deck, k) is None]
+    """Rotor analyses need a rotor (``shaft`` or ``journal``) and ``operating``; raise a located
+    DeckError otherwise."""
+    d = loaded.deck
+    missing = [] if d.shaft is not None or d.journal is not None else ["shaft"]
+    missing += [] if d.operating is not None else ["operating"]
     if missing:
         raise DeckError([DeckIssue(loaded.source, 1, 1, k, f"required for the {analysis} analysis") for k in missing])
 
 
 def available_analyses() -> tuple[str, ...]:
-    from .schema import _SECTIONS
-
-    return ANALYSES + tuple(n for n in _SECTIONS if n not in ANALYSES)
+    return ANALYSES
 
 
 def parse_deck(text: str, filename: str = "<deck>") -> LoadedDeck:

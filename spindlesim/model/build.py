@@ -1,38 +1,18 @@
-"""Build the SI rotor model from a validated deck (deck units -> SI happens only here)."""
+"""Build the SI rotor model from a validated deck (deck units -> SI happens here for the rotor,
+in each bearing family's builder for its bearings: ``spindlesim.bearings.types``)."""
 
 from __future__ import annotations
 
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
-from ..bearings.linear import LinearBearing
-from .dofs import DOFS_4, DOFS_5, DofMap
+from ..bearings.types import BEARING_TYPES
+from .dofs import DOFS_4, DOFS_5, DOFS_JOURNAL, DofMap
 from .rotor import Disk, NodalLoad, Rotor, ShaftElements
 from .shear import cowper_hollow_circle
 
 RPM = np.pi / 30.0
-
-# bearing type -> builder(deck_entry, deck) returning an object with .linearized()
-_BEARING_BUILDERS: dict[str, Callable[[Any, Any], Any]] = {}
-
-
-def register_bearing_builder(type_name: str, builder: Callable[[Any, Any], Any]) -> None:
-    """Let a bearing package turn its deck entry into a bearing object."""
-    _BEARING_BUILDERS[type_name] = builder
-
-
-def _linear(entry: Any, deck: Any) -> LinearBearing:
-    if entry.table is not None:
-        t = entry.table
-        return LinearBearing(entry.name, entry.node - 1, np.asarray(t.speed_rpm) * RPM,
-                             np.asarray(t.K_N_m, float), np.asarray(t.C_Ns_m, float))
-    C = entry.C_Ns_m if entry.C_Ns_m is not None else [[0.0, 0.0], [0.0, 0.0]]
-    return LinearBearing(entry.name, entry.node - 1, np.array([0.0]),
-                         np.asarray([entry.K_N_m], float), np.asarray([C], float))
-
-
-register_bearing_builder("linear", _linear)
 
 
 def shaft_elements(shaft: Any) -> ShaftElements:
@@ -49,20 +29,29 @@ def shaft_elements(shaft: Any) -> ShaftElements:
     )
 
 
+def build_bearings(deck: Any) -> tuple:
+    """Every ``bearings:`` entry through its family's builder (the type table)."""
+    return tuple(BEARING_TYPES[b.type].build(b) for b in deck.bearings)
+
+
 def build_rotor(deck: Any, speed_rpm: float | None = None) -> Rotor:
-    """Rotor in SI from a validated deck (``LoadedDeck.deck``)."""
+    """Rotor in SI from a validated deck (``LoadedDeck.deck``): a Timoshenko shaft (``shaft:``) or a
+    rigid journal (``journal:``, one node with translations only)."""
+    bearings = build_bearings(deck)
+    loads = tuple(NodalLoad(p.node - 1, (p.fx_N, p.fy_N, p.mx_Nm, p.my_Nm), p.fz_N) for p in deck.loads)
+    op = deck.operating
+    speed = op.speed_rpm if speed_rpm is None else speed_rpm
+    gravity = op.g_m_s2 if op.gravity else 0.0
+    if deck.shaft is None:
+        j = deck.journal
+        return Rotor(node_z_m=np.zeros(1), elements=ShaftElements.empty(), disks=(Disk(0, j.mass_kg, 0.0, 0.0, "journal"),),
+                     bearings=bearings, loads=loads, speed_rpm=speed, gravity_m_s2=gravity,
+                     dofs=DofMap(1, DOFS_JOURNAL), ground_damping_Ns_m=j.damping_Ns_mm * 1e3)
     el = shaft_elements(deck.shaft)
     z = deck.shaft.start_z_mm * 1e-3 + np.concatenate([[0.0], np.cumsum(el.length_m)])
     disks = tuple(Disk(d.node - 1, d.mass_kg, d.Ip_kg_m2, d.Id_kg_m2, d.name or f"disk{i + 1}")
                   for i, d in enumerate(deck.disks))
-    bearings = tuple(_BEARING_BUILDERS[b.type](b, deck) for b in deck.bearings)
-    loads = tuple(NodalLoad(p.node - 1, (p.fx_N, p.fy_N, p.mx_Nm, p.my_Nm), p.fz_N) for p in deck.loads)
-    op = deck.operating
     # 5 DOF per node (axial z added) when a bearing acts axially (seed 001's DTRB) or an axial load is given
-    axial = any("z" in getattr(b, "dof_names", ()) for b in bearings) or any(p.fz_N for p in deck.loads)
-    return Rotor(
-        dofs=DofMap(len(z), DOFS_5 if axial else DOFS_4),
-        node_z_m=z, elements=el, disks=disks, bearings=bearings, loads=loads,
-        speed_rpm=op.speed_rpm if speed_rpm is None else speed_rpm,
-        gravity_m_s2=op.g_m_s2 if op.gravity else 0.0,
-    )
+    axial = any("z" in b.dof_names for b in bearings) or any(p.fz_N for p in deck.loads)
+    return Rotor(dofs=DofMap(len(z), DOFS_5 if axial else DOFS_4), node_z_m=z, elements=el, disks=disks,
+                 bearings=bearings, loads=loads, speed_rpm=speed, gravity_m_s2=gravity)

@@ -29,6 +29,12 @@ class ShaftElements:
     def count(self) -> int:
         return len(self.length_m)
 
+    @classmethod
+    def empty(cls) -> "ShaftElements":
+        """No shaft (a rigid journal)."""
+        z = np.zeros(0)
+        return cls(z, z, z, z, z, z, z, z, z)
+
     @property
     def area_m2(self) -> np.ndarray:
         return np.pi / 4 * (self.outer_diameter_m**2 - self.inner_diameter_m**2)
@@ -59,11 +65,12 @@ class Rotor:
     node_z_m: np.ndarray
     elements: ShaftElements
     disks: tuple[Disk, ...] = ()
-    bearings: tuple = ()  # objects following spindlesim.bearings.base.LinearizedBearing
+    bearings: tuple = ()  # objects following the bearing contract (spindlesim/bearings/base.py)
     loads: tuple[NodalLoad, ...] = ()
-    speed_rpm: float = 0.0
+    speed_rpm: float = 0.0  # the deck's operating speed
     gravity_m_s2: float = 0.0  # 0 = gravity off; otherwise along -y
     dofs: DofMap = field(default=None)  # type: ignore[assignment]
+    ground_damping_Ns_m: float = 0.0  # viscous damping of the x, y translations to ground (rigid journal)
 
     def __post_init__(self) -> None:
         if self.dofs is None:

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
+from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
 from .figures import new_figure, save_figure
 
 

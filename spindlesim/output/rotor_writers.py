@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
+from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
 from .hdf5 import RunInfo, write_h5
 
 

@@ -35,7 +35,7 @@ def run_case(case: Case, case_dir: str) -> dict[str, Any]:
     """Run one case (in a worker process); never raises: errors are returned and recorded."""
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     os.environ.setdefault("MPLBACKEND", "Agg")
-    from ..analysis.runner import run_analysis, run_info_for
+    from ..runs import run_analysis, run_info_for
     from ..deck import DeckError, parse_deck
     from .summary import case_scalars
 

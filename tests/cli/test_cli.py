@@ -94,7 +94,7 @@ def test_out_of_range_node_is_located(tmp_path):
     deck.write_text(BAD.replace(", colour: blue", ""))
     res = CliRunner().invoke(main, ["static", str(deck), "-o", str(tmp_path / "out")])
     assert res.exit_code == 2
-    assert f"{deck}:6:15: bearings[0].node: node 5 is out of range: the shaft has nodes 1..2" in res.output
+    assert f"{deck}:6:15: bearings[0].node: node 5 is out of range: the rotor has nodes 1..2" in res.output
 
 
 def test_missing_deck_file(tmp_path):

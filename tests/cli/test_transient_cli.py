@@ -13,7 +13,7 @@ def test_rigid_race_run_writes_contract(tmp_path):
     r = CliRunner().invoke(command, ["--rollers", "8", "--model", "rigid_race", "--duration", "0.12", "-o", str(out)])
     assert r.exit_code == 0, r.output
     for name in ("transient.h5", "transient_time.png", "transient_orbit.png", "transient_spectrum.png",
-                 "transient_poincare.png", "transient_roller_forces.png"):
+                 "transient_poincare.png", "transient_bearing_roller_load_N.png"):
         assert (out / name).stat().st_size > 0
     with h5py.File(out / "transient.h5") as f:
         g = f["transient"]
@@ -40,12 +40,13 @@ def test_bad_deck_exits_2(tmp_path):
 
 
 def test_incomplete_result_is_written_and_marked(tmp_path):
-    from spindlesim.analysis.transient import TransientSettings, run_transient
-    from spindlesim.bearings.rolling.report import write_transient
+    from spindlesim.analysis.transient.engine import Perturbation, TransientSettings, simulate
     from spindlesim.output.hdf5 import RunInfo
-    from tests.unit.test_rolling_transient_driver import Oscillator
+    from spindlesim.output.transient_writer import write_transient
+    from tests.unit.test_rolling_transient_driver import Sabotage, oscillator_rotor
 
-    res = run_transient(Oscillator(t_fail=0.26, fail="interrupt"), TransientSettings(0.5, sample_rate_hz=1000, chunks=10, step_s=1e-4))
+    res = simulate(oscillator_rotor(Sabotage(0.26, "interrupt")),
+                   TransientSettings(0.5, sample_rate_hz=1000, step_s=1e-4, perturbation=Perturbation(0, 1.0)))
     path = write_transient(tmp_path / "transient.h5", RunInfo("deck", "<test>", "0" * 64), res)
     with h5py.File(path) as f:
         assert not bool(f.attrs["complete"])

@@ -4,7 +4,7 @@ from pathlib import Path
 
 import pytest
 
-from spindlesim.analysis.runner import analyses
+from spindlesim.runs import analyses
 from spindlesim.deck import load_deck, parse_deck
 from spindlesim.sweep import build_cases
 from spindlesim.sweep.cases import parse_values

@@ -5,7 +5,6 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-import spindlesim.deck.sections.contact  # noqa: F401  (registers the section if not yet done)
 from spindlesim.commands.contact import command
 from spindlesim.deck import DeckError, parse_deck
 

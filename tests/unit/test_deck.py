@@ -44,11 +44,11 @@ def test_default_decks_are_seed003_table1(name, btype):
      "deck.yaml:4:20: shaft.elements[0][2]: length_mm must be > 0"),
     ("[57.6, 22.0, 28.0", "[57.6, 0.0, 0.0", "deck.yaml:5:19: shaft.elements[1][2]: length_mm must be > 0"),
     ("[52.6, 22.0,", "[52.6, 60.0,", "deck.yaml:4:14: shaft.elements[0][1]: inner_dia_mm 60.0 must be smaller"),
-    ("name: b, node: 3", "name: b, node: 4", "deck.yaml:8:15: bearings[1].node: node 4 is out of range: the shaft has nodes 1..3"),
+    ("name: b, node: 3", "name: b, node: 4", "deck.yaml:8:15: bearings[1].node: node 4 is out of range: the rotor has nodes 1..3"),
     ("title: ok", "title: ok\ntitle: again", "deck.yaml:2:1: title: duplicate key (first defined on line 1)"),
     ("speed_rpm: 2170", "speed_rpm: [2170", "deck.yaml:11:1: invalid YAML"),
     ("type: linear, K_N_m: [[412", "type: linearr, K_N_m: [[412",
-     "deck.yaml:8:5: bearings[1]: unknown type; expected one of dtrb, linear, plain, three_lobe"),
+     "deck.yaml:8:5: bearings[1]: unknown type; expected one of dtrb, linear, plain, roller, three_lobe"),
     ("  elements:\n", "  elemnts:\n", "deck.yaml:2:1: shaft.elements: required key is missing"),
     ("0.3, 0.0]\n    - [57.6", "0.3]\n    - [57.6", "deck.yaml:4:7: shaft.elements[0]: List should have at least 8 items"),
 ])

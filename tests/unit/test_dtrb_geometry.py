@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from spindlesim.bearings.rolling.dtrb import DtrbBearing, dtrb_geometry
+from spindlesim.bearings.dtrb import DtrbBearing, dtrb_geometry
 
 
 
@@ -29,22 +29,8 @@ RPM = math.pi / 30.0
 
 
 def registered_dtrb_deck():
-    """Generator for a fixture: register the ``dtrb`` deck section and bearing type for one test
-    and restore the registries afterwards, so other tests (e.g. the list of bearing types in
-    tests/unit/test_deck.py) see the deck schema as configured in deck/sections/__init__.py."""
-    from spindlesim.deck import schema
-
-    saved_b, saved_s = dict(schema._BEARING_TYPES), dict(schema._SECTIONS)
-    module = importlib.import_module("spindlesim.deck.sections.dtrb")
-    importlib.reload(module)
-    try:
-        yield module
-    finally:
-        schema._BEARING_TYPES.clear()
-        schema._BEARING_TYPES.update(saved_b)
-        schema._SECTIONS.clear()
-        schema._SECTIONS.update(saved_s)
-        schema._deck_model_cache.clear()
+    """Generator for a fixture: the family's deck module (deck models, builders)."""
+    yield importlib.import_module("spindlesim.bearings.dtrb.section")
 
 
 def _axis_crossing(p0, p1):

@@ -9,26 +9,14 @@ import pytest
 from click.testing import CliRunner
 
 from spindlesim.deck import DeckError, parse_deck
-from spindlesim.deck import schema
 
 
-@pytest.fixture(autouse=True)
+@pytest.fixture
 def fluidfilm_types():
-    """Register three_lobe / plain for these tests only and restore the registry after.
+    """The family's deck module (deck models and the builder)."""
+    import spindlesim.bearings.fluidfilm.section as ff
 
-    Until the lead adds ``fluidfilm`` to ``spindlesim.deck.sections._MODULES`` the types
-    are not part of the global deck schema; registering them for the whole session would
-    change the union other tests' error messages are written against.
-    """
-    saved = dict(schema._BEARING_TYPES)
-    import spindlesim.deck.sections.fluidfilm as ff
-
-    schema.register_bearing_type(ff.ThreeLobeBearing)
-    schema.register_bearing_type(ff.PlainBearing)
-    yield ff
-    schema._BEARING_TYPES.clear()
-    schema._BEARING_TYPES.update(saved)
-    schema._deck_model_cache.clear()
+    return ff
 
 DECK = textwrap.dedent("""\
     title: fluid-film test
@@ -63,7 +51,7 @@ DECK = textwrap.dedent("""\
 def test_deck_builds_si_bearings(fluidfilm_types):
     ff = fluidfilm_types
     d = parse_deck(DECK, "t.yaml").deck
-    front, rear = (ff.build_bearing(b, d) for b in d.bearings)
+    front, rear = (ff.build(b) for b in d.bearings)
     assert front.node == 0 and front.geometry.clearance_m == pytest.approx(12e-6)
     assert front.geometry.machined_clearance_m == pytest.approx(24e-6)
     assert front.viscosity(80.0) == 0.002

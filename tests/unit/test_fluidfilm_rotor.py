@@ -6,7 +6,7 @@ import pytest
 from spindlesim.analysis.campbell import solve_campbell
 from spindlesim.analysis.static import solve_static
 from spindlesim.deck import default_deck, parse_deck
-from spindlesim.fe.assembly import assemble_shaft, bearing_static_loads
+from spindlesim.analysis.operating import operating_state
 from spindlesim.model.build import build_rotor
 
 
@@ -19,10 +19,10 @@ def _deck_without_loads():
 
 def test_bearing_loads_from_static_equilibrium():
     rotor = build_rotor(_deck_without_loads())
-    shaft = assemble_shaft(rotor)
-    loads = bearing_static_loads(rotor, shaft)
+    st = operating_state(rotor)
+    loads = {b.name: w for b, w in zip(st.bearings, st.loads)}
     total = sum(v for v in loads.values())
-    weight = shaft.gravity_unit[rotor.dofs.component("y")].sum() * 9.80665  # the rotor weight, along -y
+    weight = st.shaft.gravity_unit[rotor.dofs.component("y")].sum() * 9.80665  # the rotor weight, along -y
     assert weight < -100  # 14.9 kg of shaft
     # the shaft presses the bearings down with its weight plus the 1 N nose load sideways
     assert total[1] == pytest.approx(weight, rel=1e-6)

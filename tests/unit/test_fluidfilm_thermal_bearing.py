@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from spindlesim.bearings.base import LinearizedBearing
+from spindlesim.bearings.base import Bearing
 from spindlesim.bearings.fluidfilm.bearing import FluidFilmBearing
 from spindlesim.bearings.fluidfilm.geometry import multilobe_geometry, plain_geometry
 from spindlesim.bearings.fluidfilm.thermal import (
@@ -71,7 +71,7 @@ def test_no_equilibrium_is_reported_clearly():
 
 def test_protocol_and_frames(seed_result):
     b = seed_bearing()
-    assert isinstance(b, LinearizedBearing)
+    assert isinstance(b, Bearing)
     K, C = b.linearized(OMEGA)
     np.testing.assert_allclose(K, seed_result.film.K_N_m, rtol=1e-6)
     np.testing.assert_allclose(C, seed_result.film.C_Ns_m, rtol=1e-6)

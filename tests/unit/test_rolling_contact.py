@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from spindlesim.bearings.rolling.contact_force import CompliantContact
-from spindlesim.bearings.rolling.contact_search import outer_race_contact
+from spindlesim.bearings.roller.contact_force import CompliantContact
+from spindlesim.bearings.roller.contact_search import outer_race_contact
 
 
 def test_contact_search_penetration_and_normal():

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from spindlesim.bearings.rolling.kinematics import CageKinematics
+from spindlesim.bearings.roller.kinematics import CageKinematics
 
 # seed 000 Table 1: raceways 18.738 / 28.262 mm, roller DIAMETER 4.762 mm (DESIGN.md sec. 1)
 SEED000 = CageKinematics(18.738e-3, 28.262e-3, 4.762e-3)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from spindlesim.bearings.rolling.outer_race import SegmentedRing, deflection_eq17, frame_stiffness
+from spindlesim.bearings.roller.outer_race import SegmentedRing, deflection_eq17, frame_stiffness
 
 # seed 000 Table 1: outer raceway 28.262 mm, housing radius 16 mm, width 6.35 mm -> thickness 1.869 mm
 RING = SegmentedRing(12, 0.5 * (14.131e-3 + 16e-3), 1.869e-3, 6.35e-3, 208e9, 7850.0)

@@ -1,91 +1,100 @@
-"""Transient driver: sampling, Poincare instants, incomplete runs (interrupt, non-finite state)."""
+"""The transient engine's driver: sampling, Poincare instants, exact solutions, incomplete runs."""
 
 from dataclasses import dataclass
 
 import numpy as np
 import pytest
 
-from spindlesim.analysis.spectrum import amplitude_spectrum, distinct_points, poincare_times
-from spindlesim.analysis.fixed_step import plan_steps
-from spindlesim.analysis.transient import TransientSettings, run_transient
+from spindlesim.analysis.transient.engine import Perturbation, TransientSettings, simulate
+from spindlesim.analysis.transient.fixed_step import plan_steps
+from spindlesim.analysis.transient.spectrum import amplitude_spectrum, distinct_points, poincare_times
+from spindlesim.bearings.base import RADIAL, BearingBase
+from spindlesim.bearings.linear.bearing import LinearBearing
+from spindlesim.model.rig import journal_rotor
+
+W = 2 * np.pi * 50.0  # 50 Hz oscillator
+M = 0.6
+A = 1e-6
 
 
-@dataclass(frozen=True)
-class Oscillator:
-    """x'' + w^2 x = 0 in x and y, with optional sabotage after t_fail."""
-
-    w: float = 2 * np.pi * 50.0
-    t_fail: float = np.inf
-    fail: str = ""
-    model_name: str = "test"
-    rollers: int = 4
-    cage_frequency_hz: float = 12.5  # roller pass 50 Hz = the oscillator: period-1 Poincare map
-    n_state: int = 4
-
-    @property
-    def roller_pass_frequency_hz(self):
-        return self.rollers * self.cage_frequency_hz
-
-    def initial_state(self):
-        return np.array([1e-6, 0.0, 0.0, 1e-6 * self.w])
-
-    def rhs(self, t, s):
-        if t > self.t_fail:
-            if self.fail == "interrupt":
-                raise KeyboardInterrupt
-            return np.full(4, np.nan)
-        return np.array([s[2], s[3], -self.w**2 * s[0], -self.w**2 * s[1]])
-
-    def shaft_displacement(self, Y):
-        return Y[:, 0:2]
-
-    def roller_forces(self, t, Y):
-        return np.zeros((len(t), self.rollers))
-
-    def race_deflection(self, t, Y):
-        return None
+def oscillator_rotor(bearing=None, rpm=3000.0):
+    """A journal of 0.6 kg on an isotropic spring of natural frequency 50 Hz (= the shaft speed)."""
+    b = bearing or LinearBearing("spring", 0, np.array([0.0]), np.array([np.eye(2) * M * W ** 2]), np.zeros((1, 2, 2)))
+    return journal_rotor((b,), M, 0.0, (0.0, 0.0), rpm)
 
 
-# RK4 with h = 1e-4 s: global phase error ~ T w (h w)^4 / 120 = 1.3e-6 of the 1e-6 m amplitude
-@pytest.mark.parametrize("settings, tol", [
-    (dict(method="DOP853", rtol=1e-10, atol=1e-18), 1e-13),
-    (dict(method="RK4", step_s=1e-4), 3e-12)])
-def test_sampling_spectrum_and_poincare_of_an_exact_solution(settings, tol):
-    res = run_transient(Oscillator(), TransientSettings(0.5, settle_s=0.1, sample_rate_hz=2000, **settings))
+def settings(method, **kw):
+    # released from x = A (a static force K A) with y' = A w: a circular whirl of radius A at 50 Hz
+    return TransientSettings(0.5, method=method, settle_s=0.1, sample_rate_hz=2000,
+                             perturbation=Perturbation(0, A * M * W ** 2), initial_velocity=((1, A * W),), **kw)
+
+
+# exact solution x = A cos(w t), y = A sin(w t).  RK4 with h = 1e-4 s: phase error ~ T w (h w)^4 / 120 = 1.3e-6 A;
+# Newmark (trapezoidal) at h = 2.5e-5 s: period elongation (h w)^2 / 12 = 5.1e-6 (Hughes 1987, ch. 9), i.e. a
+# phase lag of 0.5 s x w x 5.1e-6 = 8.1e-4 rad: 8.1e-10 m at A = 1 um
+@pytest.mark.parametrize("method, kw, tol", [
+    ("DOP853", dict(rtol=1e-11), 1e-13),
+    ("rk4", dict(step_s=1e-4), 3e-12),
+    ("newmark", dict(step_s=2.5e-5), 9e-10)])
+def test_sampling_spectrum_and_poincare_of_an_exact_solution(method, kw, tol):
+    res = simulate(oscillator_rotor(), settings(method, **kw))
     assert res.complete and res.reason == ""
     assert res.time_s[0] == 0 and res.time_s[-1] == pytest.approx(0.5)
     assert np.allclose(np.diff(res.time_s), 1 / 2000)
-    w = 2 * np.pi * 50
-    assert res.displacement_m[:, 0] == pytest.approx(1e-6 * np.cos(w * res.time_s), abs=tol)
+    assert res.displacement_m[:, 0] == pytest.approx(A * np.cos(W * res.time_s), abs=tol)
+    assert res.displacement_m[:, 1] == pytest.approx(A * np.sin(W * res.time_s), abs=tol)
     assert res.spectrum.dominant_frequency_hz(0) == pytest.approx(50.0, abs=res.spectrum.resolution_hz)
-    # Poincare instants every 1/(N f_cage) = 20 ms from the settle time: the circle orbit maps to one point
-    assert np.allclose(np.diff(res.poincare_time_s), 0.02)
-    assert distinct_points(res.poincare_xy_m, 1e-10) == 1
-    assert res.poincare_xy_m[0] == pytest.approx([1e-6, 0.0], abs=1e-12)
+    # once per revolution (20 ms at 3000 rpm) from the settle time: the circle orbit maps to one point
+    p = res.poincare_set("revolution")
+    assert np.allclose(np.diff(p.time_s), 0.02)
+    assert distinct_points(p.xy_m, 10 * tol) == 1
+    assert p.xy_m[0] == pytest.approx([A, 0.0], abs=tol)
+
+
+@dataclass(frozen=True)
+class Sabotage(BearingBase):
+    """The spring above, which raises KeyboardInterrupt or returns NaN after t_fail."""
+
+    t_fail: float
+    fail: str
+    name: str = "sabotage"
+    node: int = 0
+    dof_names: tuple = RADIAL
+
+    def force_and_tangent(self, q, v, t=0.0, speed=0.0, angle=None):
+        if t > self.t_fail:
+            if self.fail == "interrupt":
+                raise KeyboardInterrupt
+            return np.full(2, np.nan), np.eye(2), np.zeros((2, 2))
+        K = np.eye(2) * M * W ** 2
+        return -K @ q, K, np.zeros((2, 2))
+
+    def linearized(self, speed, static_load=None):
+        return np.eye(2) * M * W ** 2, np.zeros((2, 2))
 
 
 @pytest.mark.parametrize("method, fail, word", [
-    ("DOP853", "interrupt", "interrupted"), ("DOP853", "nan", "step-size collapse"),
-    ("RK4", "interrupt", "interrupted"), ("RK4", "nan", "non-finite")])
+    ("DOP853", "interrupt", "interrupted"), ("DOP853", "nan", "failed"),
+    ("newmark", "interrupt", "interrupted"), ("newmark", "nan", "non-finite")])
 def test_failed_run_keeps_what_it_computed(method, fail, word):
-    res = run_transient(Oscillator(t_fail=0.26, fail=fail),
-                        TransientSettings(0.5, sample_rate_hz=1000, chunks=10, method=method, step_s=1e-4))
+    res = simulate(oscillator_rotor(Sabotage(0.26, fail)),
+                   TransientSettings(0.5, sample_rate_hz=1000, chunks=10, method=method, step_s=1e-4,
+                                     perturbation=Perturbation(0, 1.0)))
     assert not res.complete
     assert word in res.reason and res.reason
-    assert 0.2 <= res.t_reached_s <= 0.3
-    assert res.time_s.size > 0 and res.time_s[-1] <= 0.3
+    assert res.time_s.size > 0 and 0.2 <= res.time_s[-1] <= 0.3
     assert np.all(np.isfinite(res.displacement_m))
 
 
 def test_exact_stepping_plan():
     # 8 rollers at 5000 rpm: 1/f_rp = 3.7624 ms = 50 samples of 76 steps of 0.99 us
-    plan = plan_steps(1.0, 1e-6, 50 * 265.787, 265.787)
-    assert plan.samples_per_pass == 50 and plan.steps_per_sample == 76
+    plan, M_ = plan_steps(1.0, 1e-6, 50 * 265.787, 265.787)
+    assert M_ == 50 and plan.steps_per_sample == 76
     assert plan.step_s <= 1e-6 and plan.step_s * 76 * 50 == pytest.approx(1 / 265.787, rel=1e-12)
     assert plan.n_samples == int(1.0 * 50 * 265.787)
-    # no roller pass (0 rpm): the grid alone
-    plan = plan_steps(0.1, 3e-6, 2000.0, 0.0)
-    assert plan.samples_per_pass == 0 and plan.step_s * plan.steps_per_sample == pytest.approx(5e-4)
+    # no period (0 rpm): the grid alone
+    plan, M_ = plan_steps(0.1, 3e-6, 2000.0, 0.0)
+    assert M_ == 0 and plan.step_s * plan.steps_per_sample == pytest.approx(5e-4)
     assert plan.n_samples == 200 and plan.step_s <= 3e-6
 
 

@@ -5,9 +5,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from spindlesim.bearings.rolling.dtrb.roller_pressure import most_loaded_roller_pressure
+from spindlesim.bearings.dtrb.roller_pressure import most_loaded_roller_pressure
 from spindlesim.deck import parse_deck
-from spindlesim.fe.assembly import assemble_shaft, bearing_static_loads
+from spindlesim.analysis.operating import operating_state
 from spindlesim.model.build import build_rotor
 
 DECK = Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml"
@@ -16,9 +16,9 @@ DECK = Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml"
 def _pressure(crown: str):
     text = DECK.read_text().replace("crown_radius_mm: 2680.0", f"crown_radius_mm: {crown}")
     rotor = build_rotor(parse_deck(text, "seed001.yaml").deck)
-    loads = bearing_static_loads(rotor, assemble_shaft(rotor))
+    st = operating_state(rotor)
     dtrb = next(b for b in rotor.bearings if b.name == "dtrb")
-    state = dtrb.equilibrium(loads["dtrb"], rotor.speed_rad_s)
+    state = dtrb.equilibrium(dtrb.full_load(st.load_of("dtrb")), rotor.speed_rad_s)
     return most_loaded_roller_pressure(dtrb.geometry, state, nx=48, ny=192)
 
 

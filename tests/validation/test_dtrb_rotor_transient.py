@@ -7,9 +7,10 @@ import numpy as np
 import pytest
 
 from spindlesim.analysis.modal import solve_modal
-from spindlesim.analysis.rotor_transient_run import solve_rotor_transient
+from spindlesim.analysis.transient.engine import simulate
 from spindlesim.deck import load_deck, parse_deck
 from spindlesim.model.build import build_rotor
+from spindlesim.runs.transient import rotor_setup
 
 DECK = Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml"
 
@@ -22,19 +23,24 @@ def _deck(**replace):
     return parse_deck(text, "seed001.yaml").deck
 
 
+def _run(deck):
+    rotor, settings = rotor_setup(deck, {})
+    return rotor, simulate(rotor, settings)
+
+
 def test_transient_peaks_match_linearised_natural_frequencies():
     """Free vibration (a released 500 N force at the disk) on top of the unbalance response: the two
     strongest spectral lines at the DTRB node are the first backward/forward pair of the modal
     analysis linearised at the nonlinear static equilibrium, within one FFT bin."""
     deck = _deck(**{"duration_s: 0.5": "duration_s: 0.25"})
-    st = solve_rotor_transient(deck)
-    assert st.transient.complete
-    f, a = st.spectrum_frequency_hz, st.spectrum_amplitude_m[:, 0]
+    rotor, res = _run(deck)
+    assert res.complete
+    f, a = res.spectrum.frequency_hz, res.spectrum.amplitude[:, 0]
     bin_hz = f[1] - f[0]
     band = (f > 100) & (f < 1000)
     peaks = [i for i in np.flatnonzero(band)[1:-1] if a[i] >= a[i - 1] and a[i] >= a[i + 1]]
     top = sorted(peaks, key=lambda i: -a[i])[:2]
-    lin = np.sort(st.linearized_frequency_hz[:2])
+    lin = np.sort(solve_modal(rotor, n_modes=2).frequency_hz)
     assert lin[1] - lin[0] > 2 * bin_hz  # the pair is resolved: the check can fail
     np.testing.assert_allclose(np.sort(f[top]), lin, atol=bin_hz)
 
@@ -42,12 +48,13 @@ def test_transient_peaks_match_linearised_natural_frequencies():
 def test_rotor_at_static_equilibrium_stays_there():
     deck = _deck(**{"duration_s: 0.5": "duration_s: 0.005", "unbalance: true": "unbalance: false",
                     "  perturbation: {node: 9, dof: x, force_N: 500.0}": "  perturbation: null"})
-    st = solve_rotor_transient(deck)
-    drift = np.abs(st.transient.displacement_m[:, 0, :2] - st.static_displacement_m).max()
+    rotor, res = _run(deck)
+    static = res.displacement_m[0]
+    drift = np.abs(res.displacement_m - static).max()
     # what remains is the varying compliance of the orbiting rollers (eq. 3): ~1e-10 m here
-    assert drift < 1e-3 * np.abs(st.static_displacement_m).max()
+    assert drift < 1e-3 * np.abs(static).max()
     # the DTRB carries the disk's radial and axial load (lever arm: it also carries more than the load)
-    fb = st.transient.bearing_force_N[-1, 0]
+    fb = res.bearing_force_N[res.bearing_names.index("dtrb")][-1]
     assert fb[2] == pytest.approx(-2000.0, rel=1e-3)  # axial: all of it (to the roller-passage ripple)
     assert fb[1] > 2000.0  # radial: more than the disk load (overhung)
 
@@ -75,7 +82,7 @@ def test_transient_command_writes_roller_contact(tmp_path):
     assert res.exit_code == 0, res.output
     with h5py.File(tmp_path / "out" / "transient.h5") as f:
         assert f["/transient/displacement_m"].shape[1] == 2
-        assert f["/transient"].attrs["model"] == "rotor"
+        assert f["/transient"].attrs["method"] == "newmark"
     with h5py.File(tmp_path / "out" / "contact.h5") as f:
         g = f["/contact"]
         assert g.attrs["row"] in (1, 2) and g.attrs["load_N"] > 1000

@@ -14,30 +14,33 @@ import dataclasses
 import numpy as np
 import pytest
 
-from spindlesim.analysis.spectrum import distinct_points, poincare_spread
-from spindlesim.analysis.transient import TransientSettings, run_transient
-from spindlesim.bearings.rolling.build import system_from_section
-from spindlesim.bearings.rolling.hertz import static_load_distribution
-from spindlesim.deck.sections.transient import TransientOuterRace, TransientSection
+from spindlesim.analysis.operating import operating_state
+from spindlesim.analysis.transient.engine import TransientSettings, simulate
+from spindlesim.analysis.transient.spectrum import distinct_points, poincare_spread
+from spindlesim.analysis.transient.system import Excitation, TimeLoad
+from spindlesim.bearings.roller.load_distribution import static_load_distribution
+from spindlesim.bearings.roller.section import TransientOuterRace, TransientSection
+from spindlesim.model.rig import rig_rotor
 
 
 def flexible(rollers, segments=12, **kw):
-    sec = TransientSection(model="flexible_race", outer_race=TransientOuterRace(segments=segments), **kw)
-    return system_from_section(sec, rollers=rollers)[0]
+    """The rig of the embedded default deck with seed 000's flexible race (a journal rotor)."""
+    return rig_rotor(TransientSection(model="flexible_race", outer_race=TransientOuterRace(segments=segments), **kw),
+                     rollers=rollers)
 
 
 def band(res, channel, harmonic):
     """Largest spectral amplitude within 1.5 bins of harmonic x N f_cage."""
     f = res.spectrum.frequency_hz
-    sel = np.abs(f - harmonic * res.roller_pass_frequency_hz) <= 1.5 * res.spectrum.resolution_hz
+    sel = np.abs(f - harmonic * res.frequencies_hz["bearing.roller_pass"]) <= 1.5 * res.spectrum.resolution_hz
     return float(res.spectrum.amplitude[sel, channel].max())
 
 
 @pytest.mark.parametrize("rollers, f_rp_ref, channels", [(5, 166.1, (0, 1)), (8, 265.8, (0, 1)), (12, 398.7, (0,))])
 def test_dominant_line_at_roller_pass_frequency(rollers, f_rp_ref, channels):
-    res = run_transient(flexible(rollers), TransientSettings(0.3, settle_s=0.1))
+    res = simulate(flexible(rollers), TransientSettings(0.3, method="rk4", settle_s=0.1))
     assert res.complete, res.reason
-    assert res.roller_pass_frequency_hz == pytest.approx(f_rp_ref, abs=0.05)
+    assert res.frequencies_hz["bearing.roller_pass"] == pytest.approx(f_rp_ref, abs=0.05)
     df = res.spectrum.resolution_hz
     assert df == pytest.approx(5.0, rel=0.2)
     for ch in channels:  # x: horizontal, across the load; y: along the load
@@ -45,17 +48,17 @@ def test_dominant_line_at_roller_pass_frequency(rollers, f_rp_ref, channels):
     # zero clearance, loaded: period-1 on the Poincare map sampled every 1/(N f_cage)
     steady = res.displacement_m[res.time_s >= res.settle_s]
     ptp = np.ptp(steady, axis=0).max()
-    assert poincare_spread(res.poincare_xy_m) < 1e-3 * ptp
-    assert distinct_points(res.poincare_xy_m, 1e-2 * ptp) == 1
-    # rollers pass their load to the race: the mean outer contact resultant carries the 6 N load
-    Q = res.roller_force_N[res.time_s >= res.settle_s]
+    pc = res.poincare_set("bearing.roller_pass")
+    assert poincare_spread(pc.xy_m) < 1e-3 * ptp
+    assert distinct_points(pc.xy_m, 1e-2 * ptp) == 1
+    # rollers pass their load to the race
+    Q = res.bearing_outputs[0]["roller_load_N"][0][res.time_s >= res.settle_s]
     assert Q.min() >= 0 and Q.max() > 6.0 / rollers
 
 
 def test_response_converges_as_the_step_shrinks():
-    system = flexible(8)
-    h0 = system.default_step_s(system.initial_state())
-    runs = [run_transient(system, TransientSettings(0.15, settle_s=0.05, step_s=h)) for h in (h0, h0 / 2)]
+    rotor = flexible(8)
+    runs = [simulate(rotor, TransientSettings(0.15, method="rk4", settle_s=0.05, step_s=h)) for h in (1e-6, 0.5e-6)]
     assert runs[1].step_s < 0.6 * runs[0].step_s
     for ch in (0, 1):
         a = [band(r, ch, 1) for r in runs]
@@ -65,33 +68,35 @@ def test_response_converges_as_the_step_shrinks():
 
 def test_slowly_loaded_shaft_reaches_the_static_solution():
     # 0 rpm, the 6 N load ramped over 20 ms, then held: the roller loads settle on the static equilibrium
-    system = dataclasses.replace(flexible(8, speed_rpm=0.0), load_ramp_s=0.02)
-    res = run_transient(system, TransientSettings(0.06, settle_s=0.05))
+    loaded = flexible(8, speed_rpm=0.0)
+    free = dataclasses.replace(loaded, loads=())
+    ramp = Excitation(loads=(TimeLoad(1, -6.0, "ramp", t_on_s=0.02),))
+    res = simulate(free, TransientSettings(0.06, method="rk4", settle_s=0.05, excitation=ramp))
     assert res.complete, res.reason
-    static = dataclasses.replace(system, load_ramp_s=0.0)
-    p = static.static_equilibrium()
-    q_static = static.contact_state(0.0, p, np.zeros_like(p))["Q_out"]
-    q_end = res.roller_force_N[-1]
+    st = operating_state(loaded)  # the one static solver, with the load from the start
+    b = st.bearings[0]
+    x = np.concatenate([st.q, st.internal[0]])
+    q_static = b.outputs(x, np.zeros_like(x), 0.0, 0.0)["roller_load_N"][0]
+    q_end = res.bearing_outputs[0]["roller_load_N"][0][-1]
     assert q_end == pytest.approx(q_static, abs=0.01 * q_static.max())
-    # forces balance the load: outer contact resultant = 6 N downwards
-    psi = system.angles(res.time_s[-1])
-    resultant = np.array([q_end @ np.cos(psi), q_end @ np.sin(psi)])
-    assert resultant == pytest.approx([0.0, -6.0], abs=0.06)
+    # forces balance the load: the bearing's force on the shaft = 6 N upwards
+    assert res.bearing_force_N[0][-1] == pytest.approx([0.0, 6.0], abs=0.06)
 
 
 # measured Q (N) of the loaded rollers, default race: 2.108 / 3.019 / 2.108 (+ 0.002 at the edges);
 # Stribeck: 2.0805 / 3.0578 / 2.0805 (Q_max Z / F_r 4.03 against 4.08); race and housing x1000: 1e-5
 @pytest.mark.parametrize("stiffen, tol", [(1.0, 0.02), (1e3, 1e-4)])
 def test_static_distribution_tends_to_stribeck_as_the_race_stiffens(stiffen, tol):
-    base = flexible(8, speed_rpm=0.0)
+    rotor = flexible(8, speed_rpm=0.0)
+    base = rotor.bearings[0]
     ring = dataclasses.replace(base.ring, youngs_modulus_Pa=base.ring.youngs_modulus_Pa * stiffen)
     hc = dataclasses.replace(base.housing.contact, stiffness=base.housing.contact.stiffness * stiffen)
-    system = dataclasses.replace(base, ring=ring, housing=dataclasses.replace(base.housing, contact=hc))
-    p = system.static_equilibrium()
-    q = system.contact_state(0.0, p, np.zeros_like(p))["Q_out"]
+    b = dataclasses.replace(base, ring=ring, housing=dataclasses.replace(base.housing, contact=hc))
+    st = operating_state(dataclasses.replace(rotor, bearings=(b,)))
+    x = np.concatenate([st.q, st.internal[0]])
+    q = st.bearings[0].outputs(x, np.zeros_like(x), 0.0, 0.0)["roller_load_N"][0]
     # Stribeck with the series stiffness of the two contacts (K = k_c / 2^n), same roller angles
-    K = system.roller_contact.stiffness / 2 ** system.roller_contact.exponent
-    ref = static_load_distribution(K, system.roller_contact.exponent, 8, 6.0,
-                                   phase_rad=system.cage_phase_rad + np.pi / 2).load_N
+    K = b.roller_contact.stiffness / 2 ** b.roller_contact.exponent
+    ref = static_load_distribution(K, b.roller_contact.exponent, 8, 6.0, phase_rad=b.cage_phase_rad + np.pi / 2).load_N
     assert ref.max() * 8 / 6.0 == pytest.approx(4.08, abs=0.01)
     assert q == pytest.approx(ref, abs=tol * ref.max())

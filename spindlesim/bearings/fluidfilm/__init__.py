@@ -11,6 +11,9 @@ Layers (each usable on its own):
 - :mod:`viscosity`    Walther (ASTM D341) viscosity-temperature relation, ISO VG table
 - :mod:`thermal`      thermal equilibrium of seed 003 eqs. 4-14
 - :mod:`bearing`      :class:`FluidFilmBearing` implementing the linearised bearing protocol
+- :mod:`film_model`   :class:`FilmForceModel`: nonlinear film force and tangent F(q, v) for
+                      transients, exact (:mod:`film_force`) or tabulated (:mod:`film_table`,
+                      :mod:`film_spline`); imported on demand (numba)
 """
 
 from spindlesim.bearings.fluidfilm.bearing import FluidFilmBearing

@@ -1,32 +1,33 @@
-"""Fluid-film journal bearing implementing the linearised bearing protocol.
+"""Fluid-film journal bearing implementing the bearing contract (spindlesim/bearings/base.py).
 
-``FluidFilmBearing.linearized(speed, static_load)`` finds the thermal equilibrium
-(seed 003 eqs. 4-14) at that speed and load, the journal equilibrium and the eight
-coefficients, and returns them in the spindlesim (x horizontal, y vertical) frame, with
-the bearing force on the shaft ``f = -(K q + C q')`` (spindlesim/bearings/base.py).
+``linearized(speed, static_load)`` finds the thermal equilibrium (seed 003 eqs. 4-14) at that
+speed and load, the journal equilibrium and the eight coefficients, in the spindlesim (x
+horizontal, y vertical) frame.  ``at_operating_point(speed, static_load)`` returns the bearing
+with the viscosity of that thermal equilibrium held fixed (a transient is far faster than the
+thermal time constants), and ``force_and_tangent`` gives the film force at any journal position
+AND velocity (squeeze term) with its exact tangent, from the same Reynolds/LCP solver.
 
-The Reynolds problem is solved directly in the x, y frame (angles from +x towards +y,
-the direction of rotation), so the coefficients need no rotation; for an axisymmetric
-360 deg bore the line-of-centres solution is rotated into x, y (:mod:`equilibrium`).
+The Reynolds problem is solved directly in the x, y frame (angles from +x towards +y, the
+direction of rotation), so the coefficients need no rotation; for an axisymmetric 360 deg bore
+the line-of-centres solution is rotated into x, y (:mod:`equilibrium`).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
-from spindlesim.bearings.fluidfilm.reynolds import (
-    DEFAULT_AXIAL,
-    DEFAULT_CIRCUMFERENTIAL,
-    ReynoldsSolver,
-)
-from spindlesim.bearings.fluidfilm.results import ThermalResult
-from spindlesim.bearings.fluidfilm.thermal import ThermalParameters, solve_thermal
-from spindlesim.bearings.fluidfilm.viscosity import ConstantViscosity, WaltherViscosity
+from ..base import RADIAL, BearingBase
+from .coefficients import dimensional
+from .geometry import BearingGeometry
+from .reynolds import DEFAULT_AXIAL, DEFAULT_CIRCUMFERENTIAL, ReynoldsSolver
+from .results import ThermalResult
+from .thermal import ThermalParameters, solve_thermal
+from .viscosity import ConstantViscosity, WaltherViscosity
 
 
 @functools.lru_cache(maxsize=32)
@@ -36,12 +37,12 @@ def cached_solver(geometry: BearingGeometry, n_circ: int, n_axial: int) -> Reyno
 
 
 @dataclass(frozen=True)
-class FluidFilmBearing:
+class FluidFilmBearing(BearingBase):
     """A plain or multilobe journal bearing at a shaft node.
 
-    ``load_N`` is the deck's own load magnitude (acting downward: the shaft presses the
-    bearing in -y); when ``None`` the ``static_load_N`` vector passed to
-    :meth:`linearized` (e.g. from the rotor's static equilibrium) is used.
+    ``load_N`` is the deck's own load magnitude (acting downward: the shaft presses the bearing
+    in -y); when ``None`` the ``static_load`` passed to :meth:`linearized` (from the rotor's
+    static equilibrium) is used.  ``viscosity_Pa_s`` is set by :meth:`at_operating_point`.
     """
 
     name: str
@@ -52,43 +53,73 @@ class FluidFilmBearing:
     load_N: float | None = None
     n_circ: int = DEFAULT_CIRCUMFERENTIAL
     n_axial: int = DEFAULT_AXIAL
+    viscosity_Pa_s: float | None = None  # frozen operating-point viscosity (transient, static Newton)
+    dof_names: tuple[str, ...] = RADIAL
 
     @property
     def solver(self) -> ReynoldsSolver:
         return cached_solver(self.geometry, self.n_circ, self.n_axial)
 
-    def load_vector(self, static_load_N: np.ndarray | None = None) -> np.ndarray:
+    def load_vector(self, static_load: np.ndarray | None = None) -> np.ndarray:
         """(x, y) force of the shaft on the bearing used for this bearing."""
         if self.load_N is not None:
             return np.array([0.0, -float(self.load_N)])
-        if static_load_N is None:
-            raise ValueError(
-                f"bearing {self.name!r}: no load_N in the deck and no static load given")
-        w = np.asarray(static_load_N, dtype=float).reshape(2)
+        if static_load is None:
+            raise ValueError(f"bearing {self.name!r}: no load_N in the deck and no static load given")
+        w = np.asarray(static_load, dtype=float).reshape(2)
         if not np.hypot(*w) > 0:
             raise ValueError(f"bearing {self.name!r}: zero static load")
         return w
 
-    def analyze(self, speed_rad_s: float, static_load_N: np.ndarray | None = None) -> ThermalResult:
-        """Thermal equilibrium and operating point at ``speed_rad_s``."""
-        if not speed_rad_s > 0:
-            raise ValueError(
-                f"bearing {self.name!r}: a hydrodynamic bearing needs a positive speed "
-                f"(got {speed_rad_s} rad/s)")
-        load = self.load_vector(static_load_N)
-        return _analyze_cached(self, float(speed_rad_s), float(load[0]), float(load[1]))
+    def analyze(self, speed: float, static_load: np.ndarray | None = None) -> ThermalResult:
+        """Thermal equilibrium and operating point at ``speed`` [rad/s]."""
+        if not speed > 0:
+            raise ValueError(f"bearing {self.name!r}: a hydrodynamic bearing needs a positive speed "
+                             f"(got {speed * 30 / math.pi:.6g} rpm)")
+        load = self.load_vector(static_load)
+        return _analyze_cached(self, float(speed), float(load[0]), float(load[1]))
 
-    def linearized(self, speed_rad_s: float, static_load_N: np.ndarray | None = None):
+    def linearized(self, speed: float, static_load: np.ndarray | None = None):
         """(K [2x2] N/m, C [2x2] N s/m) in the x, y frame at the thermal equilibrium."""
-        res = self.analyze(speed_rad_s, static_load_N)
+        res = self.analyze(speed, static_load)
         return res.film.K_N_m.copy(), res.film.C_Ns_m.copy()
+
+    def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
+        """The journal position of the thermal equilibrium at (speed, load)."""
+        return self.analyze(speed, static_load).film.position_m.copy()
+
+    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None) -> "FluidFilmBearing":
+        """This bearing with the viscosity of the thermal equilibrium at (speed, load) held fixed."""
+        mu = self.analyze(speed, static_load).film.viscosity_Pa_s
+        return dataclasses.replace(self, viscosity_Pa_s=float(mu))
+
+    def force_and_tangent(self, q, v, t=0.0, speed=0.0, angle=None):
+        """Film force on the journal at displacement q and velocity v (exact Reynolds/LCP solve)."""
+        mu = self.viscosity_Pa_s
+        if mu is None:
+            if self.load_N is None:
+                raise ValueError(f"bearing {self.name!r}: the film force needs the operating point "
+                                 "(static load) that fixes its thermal-equilibrium viscosity")
+            mu = self.analyze(speed).film.viscosity_Pa_s
+        if not speed > 0:
+            raise ValueError(f"bearing {self.name!r}: the film force needs a positive speed")
+        g = self.geometry
+        cb, R = g.clearance_m, 0.5 * g.diameter_m
+        q = np.asarray(q, float)
+        v = np.asarray(v, float)
+        # a 360 deg bore is solved in the line-of-centres frame (film fed at the maximum film)
+        rot = np.eye(2)
+        if g.axisymmetric:
+            psi = math.atan2(q[1], q[0]) if np.any(q) else 0.0
+            rot = np.array([[math.cos(psi), -math.sin(psi)], [math.sin(psi), math.cos(psi)]])
+        qr, vr = rot.T @ q / cb, rot.T @ v / (speed * cb)
+        sol = self.solver.solve(qr[0], qr[1], None, Xdot=vr[0], Ydot=vr[1])
+        f = mu * speed * R ** 4 / cb ** 2 * (rot @ sol.force)
+        K, C = dimensional(sol.jac_position, sol.jac_velocity, mu, speed, R, cb)
+        return f, rot @ K @ rot.T, rot @ C @ rot.T
 
 
 @functools.lru_cache(maxsize=256)
 def _analyze_cached(bearing: FluidFilmBearing, speed_rad_s: float, wx: float, wy: float) -> ThermalResult:
     """Static, modal, FRF and Campbell ask for the same operating points: solve each once."""
     return solve_thermal(bearing.solver, bearing.viscosity, speed_rad_s, np.array([wx, wy]), bearing.thermal)
-
-
-def rpm_to_rad_s(rpm: float) -> float:
-    return rpm * math.pi / 30.0

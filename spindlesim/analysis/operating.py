@@ -1,0 +1,258 @@
+"""The rotor at an operating point: static equilibrium with every bearing's full nonlinear
+reaction (the one static solver), and the linear system about it.
+
+Static equilibrium at a speed Omega (angle 0, t = 0), unknowns the rotor DOFs q and every
+bearing's internal DOFs z_b::
+
+    K_s(Omega) q = Q + sum_b f_b(q_b, z_b),   0 = f_b,internal(q_b, z_b)
+
+solved by Newton's method with the bearings' tangents (``force_and_tangent``, the contract),
+Levenberg-Marquardt damping (contact laws have zero stiffness at first touch) and backtracking
+when a bearing refuses a position (a journal at the bore).
+
+The operating point of each bearing (a fluid film's thermal-equilibrium viscosity) depends on
+its load, which the equilibrium gives: the loads start from a solve on stiff supports (exact
+for a statically determinate rotor), the bearings are frozen there (``at_operating_point``),
+and the freeze is repeated with the new loads until they change by less than 1e-6.
+
+The linear system at the operating point adds each bearing's ``linearized(speed, load)`` to the
+shaft matrices (seed 003 eq. 21): M q'' + C q' + K q = Q.
+"""
+
+from __future__ import annotations
+
+import logging
+import warnings
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+import scipy.linalg as sla
+
+from ..fe.assembly import ShaftMatrices, assemble_shaft, load_vector
+from ..model.rotor import Rotor
+
+log = logging.getLogger(__name__)
+RPM = np.pi / 30.0
+#: relative change of the bearing loads below which the frozen operating points are kept
+LOAD_TOL = 1e-6
+
+
+class EquilibriumError(ArithmeticError):
+    """The rotor's static equilibrium was not found (what was tried is in the message)."""
+
+
+class SingularRotorError(ValueError):
+    """The rotor is not held against rigid-body motion in the direction of its loads."""
+
+
+@dataclass(frozen=True)
+class SystemMatrices:
+    """M q'' + C q' + K q = Q at one spin speed, bearings included (seed 003 eq. 21)."""
+
+    M: np.ndarray
+    C: np.ndarray
+    K: np.ndarray
+    speed_rad_s: float
+
+    @cached_property
+    def size(self) -> int:
+        return self.M.shape[0]
+
+
+@dataclass(frozen=True)
+class OperatingState:
+    """Static equilibrium of the rotor at one speed and its bearings there."""
+
+    speed_rad_s: float
+    q: np.ndarray  # rotor DOFs at static equilibrium
+    internal: tuple[np.ndarray, ...]  # each bearing's internal DOFs there (empty for most)
+    bearings: tuple  # the rotor's bearings frozen at their operating points
+    loads: tuple[np.ndarray, ...]  # what the shaft puts on each bearing, on its dof_names (= -f_b)
+    operating_loads: tuple[np.ndarray, ...]  # the loads the bearings were frozen and are linearised at
+    bearing_index: tuple[np.ndarray, ...]  # rotor DOF indices of each bearing's dof_names
+    Q: np.ndarray  # static load vector
+    shaft: ShaftMatrices
+    newton_iterations: int
+
+    def load_of(self, name: str) -> np.ndarray:
+        for b, w in zip(self.bearings, self.loads):
+            if b.name == name:
+                return w
+        raise KeyError(name)
+
+
+def bearing_indices(rotor: Rotor) -> tuple[np.ndarray, ...]:
+    """Rotor DOF indices of every bearing's ``dof_names`` at its node."""
+    return tuple(rotor.dofs.at(b.node, b.dof_names) for b in rotor.bearings)
+
+
+def _stiff_support_loads(rotor: Rotor, shaft: ShaftMatrices, K_s: np.ndarray, Q: np.ndarray,
+                         idx: tuple[np.ndarray, ...]) -> list[np.ndarray]:
+    """Bearing loads with every bearing replaced by stiff springs on its DOFs."""
+    K = K_s.copy()
+    k_stiff = 1e3 * max(float(np.max(np.abs(np.diag(K_s)))) if K_s.size else 1.0, 1e6)
+    for i in idx:
+        K[i, i] += k_stiff
+    q = _solve(K, Q, "the rotor on stiff supports")
+    return [k_stiff * q[i] for i in idx]
+
+
+def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
+    """K q = r; a singular K is accepted when r has no part along its null space (an unloaded rigid-body
+    direction, e.g. the axial motion of a rotor without axial load), else SingularRotorError."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sla.LinAlgWarning)  # singularity is checked and reported below
+        lu = sla.lu_factor(K, check_finite=False)
+    piv = np.abs(np.diag(lu[0]))
+    if np.all(np.isfinite(piv)) and piv.min() > 1e-11 * piv.max():
+        return sla.lu_solve(lu, r, check_finite=False)
+    q = np.linalg.lstsq(K, r, rcond=1e-11)[0]
+    if np.linalg.norm(K @ q - r) <= 1e-9 * max(float(np.linalg.norm(r)), 1e-300) or not np.any(r):
+        return q
+    raise SingularRotorError(f"the stiffness matrix of {what} is singular: the rotor is not held against "
+                             "rigid-body motion in the direction of its loads (the bearings must support x and y "
+                             "at two nodes, or at one node with moment stiffness; an axial load needs an axial "
+                             "support)")
+
+
+def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMatrices | None = None,
+                    tol: float = 1e-10, max_iter: int = 100, freeze: bool = True) -> OperatingState:
+    """Static equilibrium at ``speed_rpm`` (default: the rotor's) with the bearings' nonlinear reactions.
+
+    ``freeze=False`` takes the bearings as they are (already frozen at an operating point, e.g.
+    the deck speed's, for the start of a run-up)."""
+    speed = (rotor.speed_rpm if speed_rpm is None else speed_rpm) * RPM
+    shaft = assemble_shaft(rotor) if shaft is None else shaft
+    K_s = shaft.stiffness(speed)
+    Q = load_vector(rotor, shaft)
+    idx = bearing_indices(rotor)
+    loads = _stiff_support_loads(rotor, shaft, K_s, Q, idx)
+    n = K_s.shape[0]
+    internal = [np.zeros(b.internal_mass.size) for b in rotor.bearings]
+    q = None
+    total = 0
+    for outer in range(10):
+        frozen = tuple(b.at_operating_point(speed, w) if freeze else b for b, w in zip(rotor.bearings, loads))
+        if q is None:
+            q, internal, K_lin = _affine_start(frozen, idx, K_s, Q, loads, speed)
+        q, internal, f, its = _newton(rotor, frozen, idx, K_s, Q, q, internal, speed, tol, max_iter, np.diag(K_lin))
+        total += its
+        new = [-fb[: len(i)] for fb, i in zip(f, idx)]
+        scale = max(max((float(np.max(np.abs(w))) for w in new), default=0.0), 1e-9)
+        change = max((float(np.max(np.abs(a - b))) for a, b in zip(new, loads)), default=0.0) / scale
+        if change <= LOAD_TOL or not freeze:
+            break
+        loads = new
+    else:
+        log.warning("bearing loads still change by %.2g after 10 operating-point updates", change)
+    return OperatingState(speed, q, tuple(internal), frozen, tuple(new), tuple(loads), idx, Q, shaft, total)
+
+
+def _affine_start(bearings, idx, K_s, Q, loads, speed):
+    """Start of Newton: each bearing replaced by f_b = -W_b - K_b (q_b - d_b) about the displacement
+    d_b that carries its estimated load W_b (``static_displacement``): exact when the loads are."""
+    K, r = K_s.copy(), Q.copy()
+    internal = []
+    for b, i, w in zip(bearings, idx, loads):
+        kb, _ = b.linearized(speed, w)
+        d = b.static_displacement(speed, w)
+        K[np.ix_(i, i)] += kb
+        r[i] += kb @ d[: len(i)] - w
+        internal.append(np.asarray(d[len(i):], float))
+    what = "the rotor on its linearised bearings"
+    _solve(K, Q, what)  # the loads themselves must be carried (raises when a direction is not held)
+    return _solve(K, r, what), internal, K
+
+
+def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_diag):
+    """Damped Newton on [q, z_1, z_2, ...] (module note); ``k_diag`` (rotor DOFs) scales the damping
+    where the tangent has no stiffness yet (a journal in its clearance)."""
+    n = q.size
+    sizes = [z.size for z in internal]
+    offs = np.cumsum([n] + sizes)
+    N = int(offs[-1])
+    x = np.concatenate([q] + list(internal))
+    gidx = [np.concatenate([i, np.arange(o - s, o)]) for i, s, o in zip(idx, sizes, offs[1:])]
+    f_scale = max(float(np.max(np.abs(Q))) if Q.size else 0.0, 1.0)
+
+    def residual(x):
+        R = np.zeros(N)
+        R[:n] = Q - K_s @ x[:n]
+        J = np.zeros((N, N))
+        J[:n, :n] = K_s
+        forces = []
+        for b, gi in zip(bearings, gidx):
+            fb, kt, _ = b.force_and_tangent(x[gi], np.zeros(gi.size), 0.0, speed, 0.0)
+            R[gi] += fb
+            J[np.ix_(gi, gi)] += kt
+            forces.append(fb)
+        return R, J, forces
+
+    R, J, forces = residual(x)
+    rn = float(np.linalg.norm(R))
+    lam = 0.0
+    dj = np.abs(np.diag(J))
+    dj[:n] = np.maximum(dj[:n], np.abs(k_diag))
+    dscale = np.maximum(dj, 1e-12 * max(float(np.max(dj)), 1.0))
+    for it in range(1, max_iter + 1):
+        try:
+            dx = np.linalg.solve(J + lam * np.diag(dscale), R)
+        except np.linalg.LinAlgError:
+            lam = max(lam * 10.0, 1e-6)
+            continue
+        alpha, accepted = 1.0, False
+        for _ in range(30):
+            trial = x + alpha * dx
+            try:
+                Rt, Jt, ft = residual(trial)
+            except (ValueError, ArithmeticError) as exc:  # e.g. a journal pushed to the bore
+                log.debug("Newton step refused (%s); halving", exc)
+                alpha *= 0.5
+                continue
+            rt = np.linalg.norm(Rt) if np.all(np.isfinite(Rt)) else np.inf
+            # a decrease, or (damped steps) no increase: a journal crossing its clearance sees no force yet
+            if rt <= (1.0 - 1e-4 * alpha) * rn + 1e-14 * f_scale or (lam > 0 and rt <= rn):
+                accepted = True
+                break
+            alpha *= 0.5
+        if not accepted:
+            if np.max(np.abs(R)) <= 1e-6 * _force_scale(f_scale, forces):  # at the round-off floor
+                return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it
+            if lam < 1e8:
+                lam = max(lam * 10.0, 1e-6)
+                continue
+            break
+        step = alpha * dx
+        rn_old = rn
+        x, R, J, forces, rn = trial, Rt, Jt, ft, float(np.linalg.norm(Rt))
+        if rn > 0.5 * rn_old and np.max(np.abs(R)) <= 1e-7 * _force_scale(f_scale, forces):
+            return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it  # at the round-off floor
+        lam = lam * 0.1 if lam > 1e-12 else 0.0
+        small_step = np.max(np.abs(step)) <= tol * max(float(np.max(np.abs(x))), 1e-12)
+        scale = _force_scale(f_scale, forces)
+        if np.max(np.abs(R)) <= tol * scale and (small_step or np.max(np.abs(R)) <= 1e-3 * tol * scale):
+            return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it
+    names = ", ".join(b.name for b in bearings) or "none"
+    raise EquilibriumError(
+        f"static equilibrium at {speed / RPM:.6g} rpm did not converge: damped Newton with the nonlinear "
+        f"reactions of the bearings ({names}), {max_iter} iterations, residual {np.max(np.abs(R)):.3g} N "
+        f"(largest at DOF {int(np.argmax(np.abs(R)))})")
+
+
+def _force_scale(load_scale: float, forces) -> float:
+    """The largest force in the balance (loads and bearing forces): the residual's round-off scale."""
+    return max(load_scale, max((float(np.max(np.abs(fb))) for fb in forces if fb.size), default=0.0))
+
+
+def system_matrices(rotor: Rotor, speed_rpm: float | None = None, state: OperatingState | None = None,
+                    shaft: ShaftMatrices | None = None) -> SystemMatrices:
+    """M, C, K with every bearing linearised at the static equilibrium of that speed."""
+    st = operating_state(rotor, speed_rpm, shaft) if state is None else state
+    K = st.shaft.stiffness(st.speed_rad_s).copy()
+    C = st.shaft.damping(st.speed_rad_s).copy()
+    for b, i, w in zip(st.bearings, st.bearing_index, st.operating_loads):
+        kb, cb = b.linearized(st.speed_rad_s, w)
+        K[np.ix_(i, i)] += kb
+        C[np.ix_(i, i)] += cb
+    return SystemMatrices(M=st.shaft.M, C=C, K=K, speed_rad_s=st.speed_rad_s)

@@ -1,0 +1,77 @@
+"""Result objects of every analysis: frozen dataclasses of SI arrays (nothing cached on models)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class StaticResult:
+    node_z_m: np.ndarray
+    displacement_m: np.ndarray  # [node, 2] (x, y)
+    slope_rad: np.ndarray  # [node, 2] (theta_x, theta_y)
+    bearing_names: tuple[str, ...]
+    bearing_nodes: np.ndarray  # 0-based
+    bearing_force_N: np.ndarray  # [bearing, 2]: force the bearing exerts on the shaft
+    applied_force_N: np.ndarray  # (2,) sum of applied loads incl. gravity
+    stiffness_node: int  # 0-based
+    stiffness_dof: str
+    static_stiffness_N_m: float  # 1 / compliance at (stiffness_node, stiffness_dof)
+    speed_rpm: float
+    state: object = None  # the OperatingState (q with every DOF, bearing loads on all their DOFs)
+
+
+@dataclass(frozen=True)
+class ModalResult:
+    speed_rpm: float
+    eigenvalues: np.ndarray  # complex, underdamped modes (Im > 0), ascending damped frequency
+    frequency_hz: np.ndarray  # damped natural frequency
+    undamped_frequency_hz: np.ndarray  # |lambda| / 2 pi
+    damping_ratio: np.ndarray
+    log_dec: np.ndarray
+    whirl: tuple[str, ...]  # forward / backward / mixed
+    forward_fraction: np.ndarray  # share of nodes whirling forward, by mode
+    mode_shape: np.ndarray  # complex [mode, node, 4] (x, y, theta_x, theta_y), largest translation = 1
+    node_z_m: np.ndarray
+    overdamped_roots: np.ndarray  # complex roots with zeta >= 0.999 (incl. real), 1/s
+    rigid_body_roots: np.ndarray  # |lambda| below the rigid-body threshold
+    unstable: np.ndarray  # bool per mode: damping ratio < 0
+
+
+@dataclass(frozen=True)
+class CampbellResult:
+    speed_rpm: np.ndarray
+    frequency_hz: np.ndarray  # [speed, mode], modes tracked by MAC
+    log_dec: np.ndarray
+    damping_ratio: np.ndarray
+    whirl: np.ndarray  # [speed, mode] strings
+    critical_speeds_rpm: np.ndarray  # 1x line crossing a forward mode
+    critical_modes: np.ndarray  # tracked mode index of each critical speed
+
+
+@dataclass(frozen=True)
+class FrfResult:
+    frequency_hz: np.ndarray
+    receptance_m_N: np.ndarray  # complex
+    input_node: int  # 1-based, as in the deck
+    input_dof: str
+    output_node: int
+    output_dof: str
+    speed_rpm: float
+
+    @property
+    def dynamic_stiffness_N_m(self) -> np.ndarray:
+        return 1.0 / self.receptance_m_N
+
+
+@dataclass(frozen=True)
+class UnbalanceResult:
+    speed_rpm: np.ndarray
+    response_m: np.ndarray  # complex [speed, node, 2] (x, y) amplitude phasors
+    unbalance_kg_m: float
+    unbalance_node: int  # 1-based
+    output_node: int  # 1-based
+    output_dof: str
+    node_z_m: np.ndarray

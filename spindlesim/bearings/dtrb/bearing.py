@@ -1,0 +1,238 @@
+"""`DtrbBearing`: reaction, stiffness, load equilibrium and the bearing protocol.
+
+Sign conventions: ``reaction(d)`` is the force/moment the bearing exerts on the shaft
+(inner ring) at the ring displacement d = (dX, dY, dZ, phiX, phiY); ``stiffness(d)`` is
+K = -dF/dd; ``equilibrium(load)`` finds d with reaction(d) + load = 0, ``load`` being
+the (FX, FY, FZ, MX, MY) the shaft puts on the bearing.  ``preload_m`` is delta0 of
+seed 001 eq. 10: each cone is pushed towards the bearing centre by delta0 (total axial
+interference 2 delta0).  Speeds in rad/s (inner ring, outer ring fixed).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from typing import Sequence
+
+import numpy as np
+
+from ..base import FIVE, RADIAL, BearingBase, shaft_angle
+from .geometry import DtrbGeometry
+from .reactions import azimuths, projection, reaction_from, ring_motion, stiffness_from
+from .results import DtrbState, DtrbSweep
+from .roller_equilibrium import RollerSolution, operators, solve_rollers
+
+log = logging.getLogger(__name__)
+
+DOFS_2 = RADIAL
+DOFS_5 = FIVE
+
+
+class DtrbBearing(BearingBase):
+    """Quasi-static DTRB of seed 001 section 2-1, implementing the bearing contract.
+
+    Immutable after construction, except the warm-start hint of ``force_and_tangent`` (the
+    previous roller solution, a Newton start only: results do not depend on it)."""
+
+    def __init__(self, geometry: DtrbGeometry, preload_m: float = 0.0, *, name: str = "dtrb", node: int = 0,
+                 axial_load_N: float = 0.0, row_offset_rad: Sequence[float] = (0.0, 0.0),
+                 dof_names: Sequence[str] = DOFS_2):
+        self.geometry = geometry
+        self.preload_m = float(preload_m)
+        self.name = name
+        self.node = int(node)
+        self.axial_load_N = float(axial_load_N)
+        self.row_offset_rad = (float(row_offset_rad[0]), float(row_offset_rad[1]))
+        if tuple(dof_names) not in (DOFS_2, DOFS_5):
+            raise ValueError(f"dof_names must be {DOFS_2} or {DOFS_5}")
+        self.dof_names = tuple(dof_names)
+        self._ops = operators(geometry)
+        self._warm: np.ndarray | None = None  # roller solution of the last force_and_tangent call (start hint only)
+        self._held = np.zeros(3)  # z, phiX, phiY of a radial (x, y) bearing (at_operating_point)
+
+    def with_preload(self, preload_m: float) -> "DtrbBearing":
+        return DtrbBearing(self.geometry, preload_m, name=self.name, node=self.node,
+                           axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
+                           dof_names=self.dof_names)
+
+    # ---- inertia (eqs. 31-32) -------------------------------------------------------
+    def inertia_load(self, speed_rad_s: float) -> np.ndarray:
+        """(Fc cos gamma, -Fc sin gamma, -Mg) on each roller: eqs. 31-32 in the roller frame."""
+        g = self.geometry
+        wc = g.cage_ratio * speed_rad_s
+        ww = g.spin_ratio * abs(speed_rad_s)
+        Fc = g.roller_mass_kg * g.mass_centre_radius_m * wc ** 2
+        Mg = g.roller_polar_inertia_kg_m2 * abs(wc) * ww * math.sin(g.roller_axis_angle_rad)
+        gam = g.roller_axis_angle_rad
+        return np.array([Fc * math.cos(gam), -Fc * math.sin(gam), -Mg])
+
+    def _solve(self, d, speed_rad_s: float, angle_rad: float, u0=None):
+        g = self.geometry
+        psi = azimuths(g, g.cage_ratio * angle_rad, self.row_offset_rad)
+        T = projection(psi)
+        W = ring_motion(T, d, self.preload_m)
+        sol = solve_rollers(g, self._ops, W, self.inertia_load(speed_rad_s), u0=u0)
+        return psi, T, sol
+
+    # ---- public API -------------------------------------------------------------------
+    def reaction_and_stiffness(self, displacement, speed_rad_s: float = 0.0, angle_rad: float = 0.0,
+                               roller_guess: np.ndarray | None = None):
+        """(F (5,), K (5, 5), roller_u (2N, 3)) at one displacement; pass roller_u back as
+        ``roller_guess`` on the next call (time step) for a warm start."""
+        _, T, sol = self._solve(np.asarray(displacement, float), speed_rad_s, angle_rad, roller_guess)
+        return reaction_from(T, self.geometry, sol), stiffness_from(T, self._ops, sol), sol.u
+
+    def reaction(self, displacement, speed_rad_s: float = 0.0, angle_rad: float = 0.0) -> np.ndarray:
+        """Force and moment on the shaft (FX, FY, FZ [N], MX, MY [N m]), eqs. 36-40."""
+        _, T, sol = self._solve(np.asarray(displacement, float), speed_rad_s, angle_rad)
+        return reaction_from(T, self.geometry, sol)
+
+    def stiffness(self, displacement, speed_rad_s: float = 0.0, angle_rad: float = 0.0) -> np.ndarray:
+        """K = -dF/dd, 5x5 in (X, Y, Z, phiX, phiY)."""
+        _, T, sol = self._solve(np.asarray(displacement, float), speed_rad_s, angle_rad)
+        return stiffness_from(T, self._ops, sol)
+
+    def state(self, displacement, speed_rad_s: float = 0.0, angle_rad: float = 0.0, roller_guess=None) -> DtrbState:
+        d = np.asarray(displacement, float)
+        psi, T, sol = self._solve(d, speed_rad_s, angle_rad, roller_guess)
+        return self._state(d, psi, T, sol, speed_rad_s, sol.iterations, sol.converged)
+
+    def _state(self, d, psi, T, sol: RollerSolution, speed, iterations, converged) -> DtrbState:
+        g = self.geometry
+        N, S = g.rollers_per_row, g.n_slices
+        Q = sol.Q.reshape(2, N, -1)
+        per_len = 1.0 / g.slice_width_m
+        return DtrbState(
+            displacement=d.copy(), reaction=reaction_from(T, g, sol), stiffness=stiffness_from(T, self._ops, sol),
+            psi_rad=psi, roller_u=sol.u.reshape(2, N, 3),
+            inner_load_N=g.inner(Q).sum(axis=-1), outer_load_N=g.outer(Q).sum(axis=-1), rib_load_N=g.rib(Q),
+            inner_slice_N_m=g.inner(Q) * per_len, outer_slice_N_m=g.outer(Q) * per_len,
+            preload_m=self.preload_m, speed_rad_s=float(speed), iterations=int(iterations),
+            converged=bool(converged and sol.converged),
+        )
+
+    def _reference_stiffness(self) -> np.ndarray:
+        """Diagonal scale: every contact at the secant stiffness of a 1 um approach."""
+        g = self.geometry
+        psi = azimuths(g)
+        T = projection(psi)
+        k = g.stiffness * g.exponent * 1e-6 ** (g.exponent - 1.0)
+        sol = RollerSolution(np.zeros((psi.size, 3)), np.zeros((psi.size, g.n_contacts)),
+                             np.zeros((psi.size, g.n_contacts)), np.tile(k, (psi.size, 1)), 0, True, 0.0)
+        return np.diag(stiffness_from(T, self._ops, sol))
+
+    def equilibrium(self, load, speed_rad_s: float = 0.0, angle_rad: float = 0.0, d0=None,
+                    max_iter: int = 200) -> DtrbState:
+        """Ring displacement where reaction(d) + load = 0 (damped Newton on the 5 DOFs)."""
+        g = self.geometry
+        L = np.asarray(load, float)
+        d = np.zeros(5) if d0 is None else np.array(d0, float)
+        ref = self._reference_stiffness()
+        lam = 1e-3
+        scale = np.array([1.0, 1.0, 1.0, g.pitch_diameter_m, g.pitch_diameter_m])  # length scale of each DOF
+        force_scale = max(1.0, float(np.abs(L[:3]).max()), float(np.abs(L[3:]).max() / g.pitch_diameter_m))
+        u = None
+        converged = False
+        it = 0
+        for it in range(1, max_iter + 1):
+            psi, T, sol = self._solve(d, speed_rad_s, angle_rad, u)
+            u = sol.u
+            F = reaction_from(T, g, sol)
+            K = stiffness_from(T, self._ops, sol)
+            r = F + L
+            if np.all(np.abs(r / np.array([1, 1, 1, g.pitch_diameter_m, g.pitch_diameter_m])) < 1e-9 * force_scale) \
+                    and it > 1:
+                converged = True
+                break
+            step = np.linalg.solve(K + lam * np.diag(ref), r)
+            cap = 20e-6
+            big = np.abs(step * scale).max()
+            if big > cap:
+                step *= cap / big
+            d = d + step
+            lam = max(lam * 0.1, 1e-12)
+        if not converged:
+            raise ArithmeticError(f"DTRB equilibrium did not converge in {max_iter} iterations "
+                                  f"(residual {np.abs(r).max():.3g})")
+        return self._state(d, psi, T, sol, speed_rad_s, it, converged)
+
+    def linearized_full(self, speed_rad_s: float, load_N) -> np.ndarray:
+        """5x5 stiffness at the equilibrium under ``load_N`` (FX, FY, FZ, MX, MY)."""
+        return self.equilibrium(load_N, speed_rad_s).stiffness
+
+    def full_load(self, static_load) -> np.ndarray:
+        """(FX, FY, FZ, MX, MY) on the bearing: ``static_load`` on ``dof_names`` plus, for a radial
+        (x, y) bearing, the deck's axial load."""
+        load = np.array([0.0, 0.0, self.axial_load_N, 0.0, 0.0])
+        if static_load is not None:
+            q = np.asarray(static_load, float)
+            load[: q.size] = q
+        return load
+
+    def linearized(self, speed: float, static_load: np.ndarray | None = None):
+        """Contract: K at the load equilibrium on ``dof_names``, C = 0.
+
+        With ``dof_names`` (x, y) K is the (X, Y) block of the 5x5 stiffness: the axial load is
+        the deck's, and axial motion and tilt stay at their equilibrium values (held, see
+        :meth:`at_operating_point`); with all five DOFs it is the 5x5 matrix (theta about +X,
+        +Y as phiX, phiY)."""
+        K = self.linearized_full(speed, self.full_load(static_load))
+        n = len(self.dof_names)
+        return K[:n, :n].copy(), np.zeros((n, n))
+
+    def static_displacement(self, speed: float, static_load=None) -> np.ndarray:
+        """Ring displacement at the equilibrium under the static (and the deck's axial) load."""
+        return self.equilibrium(self.full_load(static_load), speed).displacement[: len(self.dof_names)].copy()
+
+    def at_operating_point(self, speed: float, static_load=None) -> "DtrbBearing":
+        """A radial (x, y) bearing holds axial motion and tilt at the equilibrium under the static
+        load and the deck's axial load; a 5-DOF bearing has nothing to hold."""
+        if len(self.dof_names) == 5:
+            return self
+        out = self.with_preload(self.preload_m)
+        out._held = self.equilibrium(self.full_load(static_load), speed).displacement[2:].copy()
+        return out
+
+    def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
+        """Contract: (force on the shaft, K_t = -df/dq, C_t = 0) on ``dof_names`` at the node
+        displacement q, roller azimuths advanced by the cage angle (eq. 3: cage ratio times the
+        shaft angle).  The previous call's roller solution is the Newton start."""
+        q = np.asarray(q, float)
+        d = np.zeros(5)
+        d[2:] = self._held
+        d[: q.size] = q
+        F, K, u = self.reaction_and_stiffness(d, speed, shaft_angle(speed, t, angle), roller_guess=self._warm)
+        self._warm = u
+        n = q.size
+        return F[:n], K[:n, :n], np.zeros((n, n))
+
+    def frequencies_hz(self, speed: float) -> dict[str, float]:
+        """Cage and roller-pass (outer race) frequencies at shaft speed [rad/s]."""
+        cage = self.geometry.cage_ratio * speed / (2 * math.pi)
+        return {"cage": cage, "roller_pass": self.geometry.rollers_per_row * cage}
+
+    # ---- sweeps (seed 001 Figs. 8 and 10) --------------------------------------------------
+    def preload_sweep(self, preloads_m, load_N, speed_rad_s: float = 0.0) -> DtrbSweep:
+        return _sweep("preload_m", preloads_m,
+                      lambda v: self.with_preload(v).equilibrium(load_N, speed_rad_s))
+
+    def load_sweep(self, component: int, values_N, load_N, speed_rad_s: float = 0.0) -> DtrbSweep:
+        base = np.asarray(load_N, float)
+
+        def run(v):
+            L = base.copy()
+            L[component] = v
+            return self.equilibrium(L, speed_rad_s)
+
+        return _sweep(["FX_N", "FY_N", "FZ_N", "MX_Nm", "MY_Nm"][component], values_N, run)
+
+
+def _sweep(name, values, run) -> DtrbSweep:
+    values = np.asarray(values, float)
+    Ks, loaded, qmax = [], [], []
+    for v in values:
+        st = run(float(v))
+        Ks.append(st.stiffness)
+        loaded.append(st.loaded_rollers())
+        qmax.append(st.outer_load_N.max(axis=1))
+    return DtrbSweep(name, values, np.array(Ks), np.array(loaded), np.array(qmax))

@@ -1,0 +1,148 @@
+"""Deck section ``dtrb:`` and bearing type ``dtrb`` (issue 6): double-row tapered roller bearing.
+
+Keys carry their units; :func:`geometry_from` converts to SI (the one place for this
+model).  Top-level section (what ``spindlesim dtrb`` computes)::
+
+    dtrb:
+      bearing:
+        rollers_per_row: 20
+        cup_angle_deg: 15.64            # alpha (catalogue e = 1.5 tan alpha)
+        pitch_diameter_mm: 70.0         # circle through the roller mid-points
+        large_end_diameter_mm: 10.0     # D_l
+        roller_length_mm: 14.0          # effective length l
+        large_end_offset_mm: 18.0       # rc: axial distance of the large-end centre from the bearing centre
+        crown_radius_mm: 2680.0         # R of eq. 1; null = straight roller
+        end_sphere_ratio: 0.9           # Rs / apex distance
+        rib_contact_height_ratio: 0.5   # rib contact distance from the roller axis / (D_l / 2)
+        slices: 30
+        material: {E_GPa: 208.0, poisson: 0.3, density_kg_m3: 7850.0}
+      preload_um: 30.0                  # delta0 per row (seed 001 eq. 10)
+      speed_rpm: 3000.0
+      load: {fx_N: 5000.0, fz_N: 5000.0}
+      preload_sweep_um: {start: 0.1, stop: 70.0, count: 50}
+      radial_sweep_N: {start: 2000.0, stop: 20000.0, count: 37}
+      polar_preloads_um: [7.9, 54.0]
+      polar_radial_loads_N: [4000.0, 16000.0]
+
+Bearing type for rotor decks (``bearings:`` list)::
+
+      - {type: dtrb, name: hub, node: 3, preload_um: 30, axial_load_N: 0, dofs: 5, geometry: {...as bearing above...}}
+
+``dofs: 5`` (default) couples the node's (x, y, z, theta_x, theta_y) and gives the rotor its axial
+DOF (seed 001's 5 DOF/node model); ``dofs: 2`` adds only the radial 2x2 block.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Literal, Optional
+
+from pydantic import Field, model_validator
+
+from ...fields import DeckModel, NodeNumber, PositiveFloat
+
+Count = Annotated[int, Field(ge=2, le=2000)]
+
+
+class DtrbMaterial(DeckModel):
+    E_GPa: PositiveFloat = 208.0
+    poisson: Annotated[float, Field(gt=-1.0, lt=0.5)] = 0.3
+    density_kg_m3: PositiveFloat = 7850.0
+
+
+class DtrbGeometrySpec(DeckModel):
+    rollers_per_row: Annotated[int, Field(ge=3, le=200)]
+    cup_angle_deg: Annotated[float, Field(gt=0.0, lt=60.0)]
+    pitch_diameter_mm: PositiveFloat
+    large_end_diameter_mm: PositiveFloat
+    roller_length_mm: PositiveFloat
+    large_end_offset_mm: PositiveFloat
+    crown_radius_mm: Optional[PositiveFloat] = None
+    end_sphere_ratio: Annotated[float, Field(gt=0.3, le=1.2)] = 0.9
+    rib_contact_height_ratio: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.5
+    slices: Annotated[int, Field(ge=1, le=500)] = 30
+    material: DtrbMaterial = DtrbMaterial()
+
+    @model_validator(mode="after")
+    def _fits(self) -> "DtrbGeometrySpec":
+        if self.large_end_diameter_mm >= self.pitch_diameter_mm / 2:
+            raise ValueError("large_end_diameter_mm must be smaller than half the pitch diameter")
+        pitch = math.pi * self.pitch_diameter_mm / self.rollers_per_row
+        if pitch <= self.large_end_diameter_mm:
+            raise ValueError(f"{self.rollers_per_row} rollers of {self.large_end_diameter_mm} mm do not fit "
+                             f"on a {self.pitch_diameter_mm} mm pitch circle")
+        return self
+
+
+class Load5(DeckModel):
+    fx_N: float = 0.0
+    fy_N: float = 0.0
+    fz_N: float = 0.0
+    mx_Nm: float = 0.0
+    my_Nm: float = 0.0
+
+    def vector(self) -> list[float]:
+        return [self.fx_N, self.fy_N, self.fz_N, self.mx_Nm, self.my_Nm]
+
+
+class SweepRange(DeckModel):
+    start: float
+    stop: float
+    count: Count
+
+    @model_validator(mode="after")
+    def _order(self) -> "SweepRange":
+        if not self.stop > self.start:
+            raise ValueError("stop must be greater than start")
+        return self
+
+
+class DtrbSection(DeckModel):
+    bearing: DtrbGeometrySpec
+    preload_um: Annotated[float, Field(ge=0.0)] = 30.0
+    speed_rpm: Annotated[float, Field(ge=0.0)] = 0.0
+    load: Load5 = Load5()
+    preload_sweep_um: Optional[SweepRange] = None
+    radial_sweep_N: Optional[SweepRange] = None
+    polar_preloads_um: list[Annotated[float, Field(ge=0.0)]] = []
+    polar_radial_loads_N: list[float] = []
+
+    @model_validator(mode="after")
+    def _ranges(self) -> "DtrbSection":
+        if self.preload_sweep_um is not None and self.preload_sweep_um.start < 0:
+            raise ValueError("preload_sweep_um must not be negative")
+        return self
+
+
+class DtrbBearingEntry(DeckModel):
+    type: Literal["dtrb"]
+    name: str
+    node: NodeNumber
+    geometry: DtrbGeometrySpec
+    preload_um: Annotated[float, Field(ge=0.0)] = 0.0
+    axial_load_N: float = 0.0
+    dofs: Literal[2, 5] = 5  # 5: x, y, z, theta_x, theta_y (the rotor gets the axial DOF); 2: x, y only
+
+
+def geometry_from(spec: DtrbGeometrySpec):
+    """SI geometry (:class:`DtrbGeometry`) from a validated spec (the one place for this conversion)."""
+    from .geometry import dtrb_geometry
+
+    m = spec.material
+    return dtrb_geometry(
+        rollers_per_row=spec.rollers_per_row, cup_angle_deg=spec.cup_angle_deg,
+        pitch_diameter_m=1e-3 * spec.pitch_diameter_mm, large_end_diameter_m=1e-3 * spec.large_end_diameter_mm,
+        roller_length_m=1e-3 * spec.roller_length_mm, large_end_offset_m=1e-3 * spec.large_end_offset_mm,
+        crown_radius_m=math.inf if spec.crown_radius_mm is None else 1e-3 * spec.crown_radius_mm,
+        end_sphere_ratio=spec.end_sphere_ratio, rib_contact_height_ratio=spec.rib_contact_height_ratio,
+        youngs_modulus_Pa=1e9 * m.E_GPa, poisson=m.poisson, density_kg_m3=m.density_kg_m3, n_slices=spec.slices,
+    )
+
+
+def build(entry: DtrbBearingEntry):
+    """Rotor deck entry (deck units) -> :class:`DtrbBearing` (SI)."""
+    from .bearing import DOFS_2, DOFS_5, DtrbBearing
+
+    return DtrbBearing(geometry_from(entry.geometry), 1e-6 * entry.preload_um, name=entry.name,
+                       node=entry.node - 1, axial_load_N=entry.axial_load_N,
+                       dof_names=DOFS_5 if entry.dofs == 5 else DOFS_2)

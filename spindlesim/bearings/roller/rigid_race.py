@@ -1,0 +1,182 @@
+"""Rolling bearing with rigid races: Hertz contacts at the cage positions (the bearing contract).
+
+Sunnersjo (J. Sound Vib. 58, 1978) and Harsha and Kankar (Int. J. Mech. Sci. 46, 2004, the
+waviness reference of seed 000): the races are rigid, the shaft centre (x, y) moves in the
+plane, rolling element j sits at the orbit angle theta_j = phase + 2 pi j / N + c phi(t) (c the
+cage ratio of seed 000 eq. 3, phi the shaft angle) and carries the Hertz force
+
+    Q_j = K (x cos theta_j + y sin theta_j - gamma_0 + w_j(t))_+^n
+
+with n = 3/2 for a ball (point contact) and n = 10/9 for a roller (line contact, Palmgren),
+gamma_0 the radial internal clearance, and w_j the local sum of surface waviness of inner
+race, outer race and rolling element.  The force on the shaft is -sum_j Q_j (cos, sin)
+theta_j.  As the elements roll, the stiffness varies at the roller-pass frequency N f_cage
+(the varying compliance).  Angles run from +x towards +y (spindlesim frame); the shaft spins
+about +z, so the cage turns the same way.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..base import RADIAL, BearingBase, CompiledForce, shaft_angle
+from ..statics import equilibrium_under_load
+from .kinematics import CageKinematics
+from .load_distribution import static_load_distribution
+
+#: kernel number of this family in ``bearings.compiled``
+KIND = 2
+#: cage positions over one pitch averaged by ``linearized``
+PITCH_POINTS = 24
+_SURFACE = {"outer": 0, "inner": 1, "roller": 2}
+
+
+@dataclass(frozen=True)
+class Waviness:
+    """One harmonic of surface waviness, a radial deviation A cos(k phi + phase) [m].
+
+    ``surface`` is "inner" (turns with the shaft), "outer" (stationary) or "roller" (turns with
+    the roller spin, seed 000 eq. 4; it meets both races, on opposite sides of the roller).
+    Positive deviation = extra material, which adds to the contact deflection (Harsha and
+    Kankar 2004).
+    """
+
+    surface: str
+    waves: int
+    amplitude_m: float
+    phase_rad: float = 0.0
+
+    def __post_init__(self) -> None:
+        if self.surface not in _SURFACE:
+            raise ValueError(f"waviness surface must be inner, outer or roller, not {self.surface!r}")
+        if self.waves < 1:
+            raise ValueError("waviness needs at least one wave")
+
+
+@dataclass(frozen=True)
+class RigidRaceBearing(BearingBase):
+    """Rigid races and Hertz contacts (Sunnersjo 1978; Harsha and Kankar 2004); the bearing contract."""
+
+    name: str
+    node: int
+    rollers: int
+    stiffness: float  # K of Q = K delta^n for the element's two contacts in series, SI (N/m^n)
+    exponent: float  # 1.5 ball, 10/9 roller
+    kinematics: CageKinematics
+    radial_clearance_m: float = 0.0
+    waviness: tuple[Waviness, ...] = field(default_factory=tuple)
+    phase_rad: float = 0.0
+    dof_names: tuple[str, ...] = RADIAL
+
+    def __post_init__(self) -> None:
+        if self.rollers < 3:
+            raise ValueError("need at least 3 rolling elements")
+        if self.stiffness <= 0 or self.exponent <= 0:
+            raise ValueError("contact stiffness and exponent must be positive")
+
+    # kinematics ---------------------------------------------------------------
+    def frequencies_hz(self, speed: float) -> dict[str, float]:
+        cage = self.kinematics.cage_ratio * speed / (2.0 * np.pi)
+        return {"cage": cage, "roller_pass": self.rollers * cage}
+
+    def angles(self, shaft_angle_rad: float) -> np.ndarray:
+        """Orbit angle of each rolling element [rad] at a shaft angle."""
+        return (self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
+                + self.kinematics.cage_ratio * shaft_angle_rad)
+
+    def waviness_m(self, theta: np.ndarray, shaft_angle_rad: float) -> np.ndarray:
+        """Sum of waviness deviations at each element's contacts [m]."""
+        w = np.zeros_like(theta)
+        for wv in self.waviness:
+            if wv.surface == "outer":
+                w += wv.amplitude_m * np.cos(wv.waves * theta + wv.phase_rad)
+            elif wv.surface == "inner":
+                w += wv.amplitude_m * np.cos(wv.waves * (theta - shaft_angle_rad) + wv.phase_rad)
+            else:
+                spin = self.kinematics.spin_ratio * shaft_angle_rad
+                w += wv.amplitude_m * (np.cos(wv.waves * spin + wv.phase_rad)
+                                       + np.cos(wv.waves * (spin + np.pi) + wv.phase_rad))
+        return w
+
+    def deflection_m(self, q: np.ndarray, shaft_angle_rad: float) -> tuple[np.ndarray, np.ndarray]:
+        """(theta_j, signed contact deflection delta_j) for a shaft displacement (x, y)."""
+        th = self.angles(shaft_angle_rad)
+        d = q[0] * np.cos(th) + q[1] * np.sin(th) - self.radial_clearance_m
+        if self.waviness:
+            d = d + self.waviness_m(th, shaft_angle_rad)
+        return th, d
+
+    def roller_loads_N(self, q: np.ndarray, shaft_angle_rad: float) -> np.ndarray:
+        """Contact load Q_j >= 0 of each rolling element [N]."""
+        _, d = self.deflection_m(np.asarray(q, float), shaft_angle_rad)
+        return self.stiffness * np.maximum(d, 0.0) ** self.exponent
+
+    # the contract -------------------------------------------------------------
+    def _at_angle(self, q: np.ndarray, angle: float) -> tuple[np.ndarray, np.ndarray]:
+        th, d = self.deflection_m(q, angle)
+        dp = np.maximum(d, 0.0)
+        Q = self.stiffness * dp ** self.exponent
+        k = self.stiffness * self.exponent * dp ** (self.exponent - 1.0)
+        c, s = np.cos(th), np.sin(th)
+        f = -np.array([Q @ c, Q @ s])
+        K = np.array([[k @ (c * c), k @ (c * s)], [k @ (c * s), k @ (s * s)]])
+        return f, K
+
+    def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
+        f, K = self._at_angle(np.asarray(q, float), shaft_angle(speed, t, angle))
+        return f, K, np.zeros((2, 2))
+
+    def _pitch_angles(self) -> np.ndarray:
+        """Shaft angles that move the cage evenly over one pitch (PITCH_POINTS points)."""
+        pitch = 2.0 * np.pi / self.rollers
+        return pitch * np.arange(PITCH_POINTS) / PITCH_POINTS / self.kinematics.cage_ratio
+
+    def pitch_average(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Force and tangent averaged over one roller pitch at a fixed displacement.
+
+        With waviness the reaction does not repeat every pitch; the average is then over the
+        same pitch positions with the waviness at shaft angle 0 + the cage travel, an
+        approximation stated in docs/theory.md."""
+        out = [self._at_angle(q, a) for a in self._pitch_angles()]
+        return np.mean([o[0] for o in out], axis=0), np.mean([o[1] for o in out], axis=0)
+
+    def static_displacement(self, speed: float = 0.0, static_load=None) -> np.ndarray:
+        """Displacement at which the pitch-averaged reaction carries ``static_load`` (x, y)."""
+        W = np.asarray(static_load if static_load is not None else np.zeros(2), float)[:2]
+        fr = float(np.hypot(*W))
+        if fr == 0.0:
+            return np.zeros(2)
+        dist = static_load_distribution(self.stiffness, self.exponent, self.rollers, fr,
+                                        2.0 * self.radial_clearance_m)
+        q0 = dist.displacement_m * W / fr
+        scale = max(dist.displacement_m, 1e-9)
+        return equilibrium_under_load(self.pitch_average, W, q0, scale, self.name, max_step=scale)
+
+    def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
+        """The tangent at the static state averaged over one roller pitch; no damping."""
+        _, K = self.pitch_average(self.static_displacement(speed, static_load))
+        return K, np.zeros((2, 2))
+
+    def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
+        a = shaft_angle(speed, t, angle)
+        th, d = self.deflection_m(np.asarray(q, float)[:2], a)
+        Q = self.stiffness * np.maximum(d, 0.0) ** self.exponent
+        return {"force": (-np.array([Q @ np.cos(th), Q @ np.sin(th)]), "N"), "roller_load_N": (Q, "N")}
+
+    def compiled(self) -> CompiledForce:
+        """floats: [K, n, gamma0, cage ratio, spin ratio, cos base (N), sin base (N), waviness (4 per row)]."""
+        base = self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
+        wav = np.array([[_SURFACE[w.surface], w.waves, w.amplitude_m, w.phase_rad] for w in self.waviness],
+                       dtype=float).reshape(-1, 4)
+        k = self.kinematics
+        floats = np.concatenate([[self.stiffness, self.exponent, self.radial_clearance_m, k.cage_ratio,
+                                  k.spin_ratio], np.cos(base), np.sin(base), wav.ravel()])
+        return CompiledForce(KIND, floats, np.array([self.rollers, len(self.waviness)], np.int64))
+
+    def potential_energy_J(self, q: np.ndarray, shaft_angle_rad: float) -> float:
+        """Elastic energy sum K delta_+^(n+1)/(n+1) (conservative at zero speed)."""
+        _, d = self.deflection_m(np.asarray(q, float), shaft_angle_rad)
+        n = self.exponent
+        return float(np.sum(self.stiffness * np.maximum(d, 0.0) ** (n + 1.0) / (n + 1.0)))

@@ -1,0 +1,211 @@
+"""Deck keys of the cylindrical roller bearing of seed 000: ``type: roller`` and the rig section.
+
+``type: roller`` puts the bearing under any rotor (``bearings:`` list); its keys are those of
+the rig section's ``transient.bearing`` plus the number of rollers, the model and its parts:
+
+    bearings:
+      - {type: roller, name: rear, node: 18, rollers: 12, model: rigid_race,
+         inner_raceway_diameter_mm: 18.738, outer_raceway_diameter_mm: 28.262, roller_diameter_mm: 4.762,
+         width_mm: 6.35, radial_clearance_mm: 0.0, waviness: [{surface: outer, waves: 8, amplitude_um: 0.5}]}
+
+The rig section ``transient:`` (issue 4) describes seed 000's 2-DOF test rig: a rigid journal of
+``shaft.mass_kg`` in this bearing under ``shaft.radial_load_N``; ``spindlesim.model.rig`` turns it
+into a rotor deck (journal + ``type: roller`` bearing) for the one transient engine.  Every key
+carries its unit; :func:`build` is the one place where they become SI.  Defaults are seed 000's
+bearing (Table 1) with the shaft mass of Harsha and Kankar (2004); see
+``spindlesim/decks/transient.yaml`` for the source of every number.
+
+Contact stiffness: by default Palmgren's line-contact law for ONE roller/raceway contact
+(``contact.hertz.palmgren_stiffness``); the rigid-race model puts the inner and outer contacts
+in series (K / 2^(10/9)), the flexible-race model has them as separate contacts.  A given
+``contact_stiffness_N_per_m_n`` is the constant of the two contacts in series (as Harsha and
+Kankar quote 7.055e9 N/m^1.5 for their ball bearing).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Annotated, Literal, Optional, Union
+
+from pydantic import Field, model_validator
+
+from ...fields import DeckModel, Fraction, NodeNumber, NonNegFloat, PositiveFloat
+
+if TYPE_CHECKING:
+    from .flexible_race import FlexibleRaceBearing
+    from .rigid_race import RigidRaceBearing
+
+Rollers = Annotated[int, Field(ge=3, le=100)]
+
+
+class TransientBearing(DeckModel):
+    inner_raceway_diameter_mm: PositiveFloat = 18.738
+    outer_raceway_diameter_mm: PositiveFloat = 28.262
+    roller_diameter_mm: PositiveFloat = 4.762  # seed 000 Table 1 says "radius"; it is the diameter
+    width_mm: PositiveFloat = 6.35
+    housing_radius_mm: PositiveFloat = 16.0
+    radial_clearance_mm: NonNegFloat = 0.0
+    slip_inner: Fraction = 0.0
+    slip_outer: Fraction = 0.0
+    element: Literal["roller", "ball"] = "roller"
+    # Hertz constant K of Q = K delta^n (total, both contacts); default: Palmgren for a roller
+    contact_stiffness_N_per_m_n: Optional[PositiveFloat] = None
+    E_GPa: PositiveFloat = 208.0
+    density_kg_m3: PositiveFloat = 7850.0
+
+
+class TransientShaft(DeckModel):
+    mass_kg: PositiveFloat = 0.6
+    damping_Ns_mm: NonNegFloat = 0.2
+    radial_load_N: NonNegFloat = 6.0  # along -y (gravity direction)
+
+
+class TransientOuterRace(DeckModel):
+    segments: Annotated[int, Field(ge=3, le=360)] = 12
+
+
+class TransientContact(DeckModel):
+    """Eq. 30-31 parameters of the roller contacts (flexible_race model)."""
+
+    damping_Ns_m2: NonNegFloat = 1.8e9  # c, with m2 = 1, m3 = 1
+    velocity_exponent: PositiveFloat = 1.0
+    indentation_exponent: NonNegFloat = 1.0
+    friction: NonNegFloat = 0.0
+    slip_regularisation_m_s: PositiveFloat = 1e-3
+
+
+class TransientHousing(DeckModel):
+    """Outer race on the housing bore (seed 000 "surface contact"), per metre of bore circumference.
+
+    Each segment gets these times its arc on the housing radius, so the support does not change
+    with the number of segments.  Seed 000 gives no values; defaults: 1.2e11 N/m^2 (1e9 N/m on each
+    of 12 segments, stiffer than a roller contact, ~1.5e8 N/m) and damping ~5% of critical per segment.
+    """
+
+    stiffness_N_m2: PositiveFloat = 1.2e11
+    damping_Ns_m2: NonNegFloat = 2.0e4
+    tangential_stiffness_N_m2: NonNegFloat = 1.2e9
+    friction: NonNegFloat = 0.0
+    # the segment's outer face sits on the bore (seed 000 "surface contact"): it resists rocking with
+    # k s^2/12, s the segment's arc on the housing radius; false = point support (no rocking stiffness)
+    surface_contact: bool = True
+
+
+class TransientWaviness(DeckModel):
+    surface: Literal["inner", "outer", "roller"]
+    waves: Annotated[int, Field(ge=1, le=10_000)]
+    amplitude_um: NonNegFloat
+    phase_deg: float = 0.0
+
+
+class TransientIntegrator(DeckModel):
+    # RK4: compiled fixed-step RK4 (default); the others are scipy's adaptive solve_ivp methods on the
+    # numpy right-hand side (slow: a cross-check).  step_us bounds the RK4 step (default: 1 us for the
+    # rigid race, the stability limit for the flexible race); rtol is for the adaptive methods
+    # (default 1e-7 rigid race, 1e-5 flexible race).
+    method: Literal["RK4", "RK45", "DOP853", "LSODA", "BDF", "Radau"] = "RK4"
+    step_us: Optional[PositiveFloat] = None
+    rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None
+    sample_rate_hz: Optional[PositiveFloat] = None
+    chunks: Annotated[int, Field(ge=1, le=100000)] = 40
+
+
+def _check_geometry(b: "TransientBearing", model: str) -> None:
+    gap = b.outer_raceway_diameter_mm - b.inner_raceway_diameter_mm - 2 * b.roller_diameter_mm
+    if gap < -1e-9:
+        raise ValueError(f"rollers do not fit: outer - inner raceway diameter - 2 x roller diameter = {gap:.4g} mm")
+    if b.housing_radius_mm <= 0.5 * b.outer_raceway_diameter_mm:
+        raise ValueError("housing_radius_mm must exceed the outer raceway radius (it bounds the outer race)")
+    if b.element == "ball" and b.contact_stiffness_N_per_m_n is None:
+        raise ValueError("element 'ball' needs contact_stiffness_N_per_m_n (e.g. 7.055e9, Harsha and Kankar 2004)")
+    if model == "flexible_race" and b.element == "ball":
+        raise ValueError("the flexible_race model is a roller bearing (seed 000); use rigid_race for balls")
+
+
+class RollerEntry(TransientBearing):
+    """``type: roller`` in a rotor deck's ``bearings:`` list."""
+
+    type: Literal["roller"]
+    name: str
+    node: NodeNumber
+    rollers: Rollers = 8
+    model: Literal["rigid_race", "flexible_race"] = "rigid_race"
+    outer_race: TransientOuterRace = TransientOuterRace()
+    contact: TransientContact = TransientContact()
+    housing: TransientHousing = TransientHousing()
+    waviness: Annotated[list[TransientWaviness], Field(max_length=64)] = []
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "RollerEntry":
+        _check_geometry(self, self.model)
+        if self.model == "flexible_race" and self.waviness:
+            raise ValueError("waviness is modelled in the rigid_race model only")
+        return self
+
+
+def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
+    """Deck entry -> rigid-race or flexible-race bearing (SI; node 0-based)."""
+    import numpy as np
+
+    from ...contact.hertz import EXPONENT_LINE, EXPONENT_POINT, palmgren_stiffness
+    from .kinematics import CageKinematics
+
+    node = e.node - 1
+    if e.element == "ball":
+        K_total, n = float(e.contact_stiffness_N_per_m_n), EXPONENT_POINT
+    else:
+        n = EXPONENT_LINE
+        # Palmgren's law as the constant of the element's two contacts (see the module note)
+        K_total = float(e.contact_stiffness_N_per_m_n or palmgren_stiffness(e.width_mm * 1e-3))
+    r_out_mm = 0.5 * e.outer_raceway_diameter_mm + e.radial_clearance_mm  # clearance enlarges the outer raceway
+    if e.model == "rigid_race":
+        from .rigid_race import RigidRaceBearing, Waviness
+
+        kin = CageKinematics(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
+                             e.roller_diameter_mm * 1e-3, e.slip_inner, e.slip_outer)
+        wav = tuple(Waviness(w.surface, w.waves, w.amplitude_um * 1e-6, np.radians(w.phase_deg)) for w in e.waviness)
+        return RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, e.radial_clearance_mm * 1e-3, wav)
+    from .contact_force import CompliantContact
+    from .flexible_race import FlexibleRaceBearing, HousingSupport
+    from .outer_race import SegmentedRing
+
+    r_out, r_h = r_out_mm * 1e-3, e.housing_radius_mm * 1e-3
+    ring = SegmentedRing(e.outer_race.segments, 0.5 * (r_out + r_h), r_h - r_out, e.width_mm * 1e-3,
+                         e.E_GPa * 1e9, e.density_kg_m3)
+    kin = CageKinematics(e.inner_raceway_diameter_mm * 1e-3, 2 * r_out, e.roller_diameter_mm * 1e-3,
+                         e.slip_inner, e.slip_outer)
+    c = e.contact
+    rc = CompliantContact(K_total * 2.0 ** n, n, c.damping_Ns_m2, c.velocity_exponent,
+                          c.indentation_exponent, c.friction, c.slip_regularisation_m_s)
+    h = e.housing
+    arc = 2.0 * np.pi * r_h / ring.segments  # each segment's share of the bore
+    hc = CompliantContact(h.stiffness_N_m2 * arc, 1.0, h.damping_Ns_m2 * arc, 1.0, 0.0, h.friction,
+                          c.slip_regularisation_m_s)
+    support = HousingSupport(hc, 0.0, h.tangential_stiffness_N_m2 * arc,
+                             rocking_arc_m=arc if h.surface_contact else 0.0)
+    return FlexibleRaceBearing(e.name, node, kin, e.rollers, ring, rc, support, e.width_mm * 1e-3, e.density_kg_m3)
+
+
+class TransientSection(DeckModel):
+    """The rig section ``transient:``: seed 000's 2-DOF test rig (rigid journal in the bearing)."""
+
+    model: Literal["flexible_race", "rigid_race"] = "flexible_race"
+    rollers: Rollers = 8
+    duration_s: PositiveFloat = 0.3
+    settle_s: Optional[NonNegFloat] = None
+    speed_rpm: NonNegFloat = 5000.0
+    bearing: TransientBearing = TransientBearing()
+    shaft: TransientShaft = TransientShaft()
+    outer_race: TransientOuterRace = TransientOuterRace()
+    contact: TransientContact = TransientContact()
+    housing: TransientHousing = TransientHousing()
+    waviness: list[TransientWaviness] = []
+    integrator: TransientIntegrator = TransientIntegrator()
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "TransientSection":
+        _check_geometry(self.bearing, self.model)
+        if self.settle_s is not None and self.settle_s >= self.duration_s:
+            raise ValueError("settle_s must be shorter than duration_s")
+        if self.model == "flexible_race" and self.waviness:
+            raise ValueError("waviness is modelled in the rigid_race model only")
+        return self

@@ -1,0 +1,74 @@
+"""Runs: one module per analysis; each reads the deck, calls the physics, writes HDF5 and PNG files.
+
+The scriptable API the CLI wraps::
+
+    from spindlesim.deck import load_deck
+    from spindlesim.runs import run_analysis
+    paths = run_analysis("modal", load_deck("spindle.yaml"), "out/spindle")
+
+Every run is ``run(loaded_deck, outdir, run_info, options, progress) -> list[Path]``; :data:`RUNS`
+is the one table of them (module, function), imported only when a run is asked for.
+"""
+
+from __future__ import annotations
+
+import importlib
+from pathlib import Path
+from typing import Any, Callable
+
+from ..deck.loader import ANALYSES, LoadedDeck
+from ..output.hdf5 import RunInfo
+
+Progress = Callable[[int, int], None] | None
+
+#: analysis name -> (module in spindlesim.runs, function)
+RUNS: dict[str, tuple[str, str]] = {
+    "static": ("rotor", "run_static"),
+    "modal": ("rotor", "run_modal"),
+    "campbell": ("rotor", "run_campbell"),
+    "frf": ("rotor", "run_frf"),
+    "unbalance": ("rotor", "run_unbalance"),
+    "transient": ("transient", "run"),
+    "rotor_transient": ("transient", "run"),  # the name of seed 001 study decks (the same run)
+    "thermal": ("fluidfilm", "run_thermal"),
+    "coefficients": ("fluidfilm", "run_coefficients"),
+    "dtrb": ("dtrb", "run_dtrb"),
+    "contact": ("contact", "run_contact"),
+}
+assert set(RUNS) == set(ANALYSES), "the deck's analysis names and the runs table must agree"
+
+
+def analyses() -> tuple[str, ...]:
+    return tuple(RUNS)
+
+
+def run_info_for(loaded: LoadedDeck, command_line: str | None = None) -> RunInfo:
+    kw = {} if command_line is None else {"command_line": command_line}
+    return RunInfo(deck_text=loaded.text, deck_source=loaded.source, deck_sha256=loaded.sha256, **kw)
+
+
+def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dict[str, Any] | None = None,
+                 progress: Progress = None, run: RunInfo | None = None) -> list[Path]:
+    """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths."""
+    if name not in RUNS:
+        raise KeyError(f"unknown analysis {name!r}; known: {', '.join(RUNS)}")
+    module, function = RUNS[name]
+    fn = getattr(importlib.import_module(f"{__name__}.{module}"), function)
+    return fn(loaded, Path(outdir), run or run_info_for(loaded), options or {}, progress)
+
+
+def default_analyses(loaded: LoadedDeck) -> list[str]:
+    """What ``spindlesim run`` does when the deck has no ``analyses`` list: the rotor analyses the deck
+    supports, the fluid-film tables when it has fluid-film bearings, and every section it contains."""
+    d = loaded.deck
+    names: list[str] = []
+    if (d.shaft is not None or d.journal is not None) and d.operating is not None:
+        names = ["static", "modal", "campbell", "frf"]
+        if d.unbalance is not None:
+            names.append("unbalance")
+        if d.rotor_transient is not None:
+            names.append("transient")
+    if any(b.type in ("three_lobe", "plain") and b.load_N is not None for b in d.bearings):
+        names[:0] = ["thermal", "coefficients"]
+    names += [n for n in ("dtrb", "contact", "transient") if getattr(d, n, None) is not None and n not in names]
+    return names

@@ -1,0 +1,157 @@
+"""The ``thermal`` and ``coefficients`` analyses: deck -> fluid-film bearings -> HDF5 + PNG.
+
+Signatures follow ``spindlesim.runs`` (the RUNS table):
+``(loaded_deck, outdir, run_info, options, progress) -> list[Path]``; ``options`` may set
+``speed_rpm`` (None = the deck's ``operating.speed_rpm``).
+
+Output (DESIGN.md section 5):
+
+- thermal.h5: /thermal/<bearing>/ temperature_mean_C, temperature_out_C, viscosity_Pa_s,
+  sommerfeld, eccentricity_ratio, attitude_angle_deg, min_film_m, friction_torque_Nm,
+  oil_flow_m3_s, reynolds_number (+ heat flows, flows, inlet/ambient temperatures)
+- coefficients.h5: /coefficients/<bearing>/ K_N_m, C_Ns_m (x horizontal, y vertical),
+  k, c (on Cp, seed 003 eqs. 15-16), k_load, c_load (on Cb, load frame), sommerfeld,
+  eccentricity_ratio, attitude_angle_deg
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+log = logging.getLogger(__name__)
+
+FLUID_TYPES = ("three_lobe", "plain")
+
+
+def _fluid_bearings(loaded: Any):
+    from ..bearings.fluidfilm.section import build
+
+    entries = [b for b in loaded.deck.bearings if b.type in FLUID_TYPES]
+    if not entries:
+        raise ValueError("the deck has no fluid-film bearing (type three_lobe or plain)")
+    for e in entries:
+        if e.load_N is None:
+            raise ValueError(
+                f"bearing {e.name!r}: give load_N (loads from the rotor's static equilibrium "
+                "are used by the rotor analyses, not by this command)")
+    return [build(e) for e in entries]
+
+
+def _speed_rad_s(loaded: Any, options: dict) -> float:
+    rpm = options.get("speed_rpm")
+    if rpm is None:
+        op = getattr(loaded.deck, "operating", None)
+        if op is None:
+            raise ValueError("no speed: give operating.speed_rpm in the deck or --speed")
+        rpm = op.speed_rpm
+    if not rpm > 0:
+        raise ValueError(f"a fluid-film bearing needs a positive speed (got {rpm} rpm)")
+    return float(rpm) * math.pi / 30.0
+
+
+def _analyze_all(loaded, options, progress):
+    bearings = _fluid_bearings(loaded)
+    om = _speed_rad_s(loaded, options)
+    out = []
+    for i, b in enumerate(bearings):
+        res = b.analyze(om)
+        f = res.film
+        log.info("%s: mean film %.2f degC, mu %.4g Pa s, S %.4g, e/Cb %.4f, attitude %.1f deg",
+                 b.name, res.temperature_mean_C, f.viscosity_Pa_s, f.sommerfeld,
+                 f.eccentricity_ratio, f.attitude_angle_deg)
+        out.append((b, res))
+        if progress is not None:
+            progress(i + 1, len(bearings))
+    return out, om
+
+
+def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None,
+                progress: Any = None) -> list[Path]:
+    """Thermal equilibrium of every fluid-film bearing; thermal.h5 and pressure PNGs."""
+    from ..bearings.fluidfilm.plots import pressure_figure
+    from ..output.figures import save_figure
+    from ..output.hdf5 import write_h5
+
+    results, om = _analyze_all(loaded, options or {}, progress)
+    ds: dict[str, tuple[Any, str]] = {}
+    attrs: dict[str, dict] = {"/thermal": {"speed_rpm": om * 30.0 / math.pi}}
+    for b, r in results:
+        f = r.film
+        g = f"/thermal/{b.name}"
+        ds.update({
+            f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC"),
+            f"{g}/temperature_out_C": (r.temperature_out_C, "degC"),
+            f"{g}/temperature_in_C": (r.temperature_in_C, "degC"),
+            f"{g}/ambient_C": (r.ambient_C, "degC"),
+            f"{g}/viscosity_Pa_s": (f.viscosity_Pa_s, "Pa s"),
+            f"{g}/sommerfeld": (f.sommerfeld, "1 (mu N D L / (psi^2 W), psi = 2 Cp / D)"),
+            f"{g}/sommerfeld_b": (f.sommerfeld_b, "1 (on Cb)"),
+            f"{g}/eccentricity_ratio": (f.eccentricity_ratio, "1 (e / Cb)"),
+            f"{g}/attitude_angle_deg": (f.attitude_angle_deg, "deg"),
+            f"{g}/min_film_m": (f.min_film_m, "m"),
+            f"{g}/friction_torque_Nm": (f.friction_torque_Nm, "N m"),
+            f"{g}/power_loss_W": (f.power_loss_W, "W"),
+            f"{g}/friction_coefficient": (f.friction_coefficient, "1"),
+            f"{g}/oil_flow_m3_s": (r.oil_flow_m3_s, "m^3/s"),
+            f"{g}/inlet_flow_m3_s": (f.inlet_flow_m3_s, "m^3/s"),
+            f"{g}/side_flow_m3_s": (f.side_flow_m3_s, "m^3/s"),
+            f"{g}/reynolds_number": (f.reynolds_number, "1 (rho omega R Cb / mu)"),
+            f"{g}/heat_generated_W": (r.heat_generated_W, "W"),
+            f"{g}/heat_to_oil_W": (r.heat_to_oil_W, "W"),
+            f"{g}/heat_to_housing_W": (r.heat_to_housing_W, "W"),
+            f"{g}/load_N": (f.load_N, "N"),
+            f"{g}/journal_position_m": (f.position_m, "m"),
+        })
+        attrs[g] = {"type": "isoviscous" if r.isoviscous else "thermal equilibrium",
+                    "node": b.node + 1, "housing_conductance_W_K": r.housing_conductance_W_K}
+    paths = [write_h5(Path(outdir) / "thermal.h5", run, ds, attrs)]
+    for b, r in results:
+        paths.append(save_figure(pressure_figure(r.film, f"{b.name}"),
+                                 Path(outdir) / f"thermal_pressure_{b.name}.png"))
+    return paths
+
+
+def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None = None,
+                     progress: Any = None) -> list[Path]:
+    """Eight coefficients at the thermal equilibrium; coefficients.h5 and characteristic charts."""
+    from ..bearings.fluidfilm.performance import characteristic_curves
+    from ..bearings.fluidfilm.plots import characteristics_figure
+    from ..output.figures import save_figure
+    from ..output.hdf5 import write_h5
+
+    results, om = _analyze_all(loaded, options or {}, progress)
+    ds: dict[str, tuple[Any, str]] = {}
+    attrs: dict[str, dict] = {"/coefficients": {"speed_rpm": om * 30.0 / math.pi,
+                                                "frame": "x horizontal, y vertical (up)"}}
+    for b, r in results:
+        f = r.film
+        g = f"/coefficients/{b.name}"
+        ds.update({
+            f"{g}/K_N_m": (f.K_N_m, "N/m"),
+            f"{g}/C_Ns_m": (f.C_Ns_m, "N s/m"),
+            f"{g}/k": (f.k, "1 (K Cp / W, x-y frame)"),
+            f"{g}/c": (f.c, "1 (B Cp omega / W, x-y frame)"),
+            f"{g}/k_load": (f.k_load, "1 (K Cb / W, load frame)"),
+            f"{g}/c_load": (f.c_load, "1 (B Cb omega / W, load frame)"),
+            f"{g}/sommerfeld": (f.sommerfeld, "1 (mu N D L / (psi^2 W), psi = 2 Cp / D)"),
+            f"{g}/eccentricity_ratio": (f.eccentricity_ratio, "1 (e / Cb)"),
+            f"{g}/attitude_angle_deg": (f.attitude_angle_deg, "deg"),
+            f"{g}/viscosity_Pa_s": (f.viscosity_Pa_s, "Pa s"),
+            f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC"),
+        })
+        attrs[g] = {"node": b.node + 1}
+    paths = [write_h5(Path(outdir) / "coefficients.h5", run, ds, attrs)]
+    for b, r in results:
+        S0 = r.film.sommerfeld
+        curves = characteristic_curves(b.geometry, S0 * np.logspace(-1.5, 1.5, 19),
+                                       b.n_circ, b.n_axial)
+        fig = characteristics_figure(curves, f"{b.name}: L/D {b.geometry.l_over_d:.3g}, "
+                                             f"mp {b.geometry.preload:.3g}; operating S = {S0:.3g}",
+                                     mark_S=S0)
+        paths.append(save_figure(fig, Path(outdir) / f"coefficients_{b.name}.png"))
+    return paths
