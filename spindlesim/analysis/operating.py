@@ -117,11 +117,13 @@ def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
 
 
 def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMatrices | None = None,
-                    tol: float = 1e-10, max_iter: int = 100, freeze: bool = True) -> OperatingState:
+                    tol: float = 1e-10, max_iter: int = 100, freeze: bool = True,
+                    transient: bool = False) -> OperatingState:
     """Static equilibrium at ``speed_rpm`` (default: the rotor's) with the bearings' nonlinear reactions.
 
     ``freeze=False`` takes the bearings as they are (already frozen at an operating point, e.g.
-    the deck speed's, for the start of a run-up)."""
+    the deck speed's, for the start of a run-up); ``transient=True`` freezes them for a time
+    integration (the contract's ``at_operating_point``)."""
     speed = (rotor.speed_rpm if speed_rpm is None else speed_rpm) * RPM
     shaft = assemble_shaft(rotor) if shaft is None else shaft
     K_s = shaft.stiffness(speed)
@@ -133,7 +135,7 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
     q = None
     total = 0
     for outer in range(10):
-        frozen = tuple(b.at_operating_point(speed, w) if freeze else b for b, w in zip(rotor.bearings, loads))
+        frozen = tuple(b.at_operating_point(speed, w, transient) if freeze else b for b, w in zip(rotor.bearings, loads))
         if q is None:
             q, internal, K_lin = _affine_start(frozen, idx, K_s, Q, loads, speed)
         q, internal, f, its = _newton(rotor, frozen, idx, K_s, Q, q, internal, speed, tol, max_iter, np.diag(K_lin))

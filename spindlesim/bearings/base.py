@@ -37,6 +37,9 @@ force_and_tangent(q, v, t, speed, angle=None) -> (f, K_t, C_t)
     speed * t; a speed ramp passes the integral).  f: force on the shaft (and on the internal
     DOFs); K_t = -df/dq and C_t = -df/dv, square of the size of q.  Used by the one static
     equilibrium solver and by the transient engine.
+force(q, v, t, speed, angle=None) -> f
+    The force alone (the first output of ``force_and_tangent``); the default evaluates that, a
+    family whose tangent costs more (differences) gives the force directly.
 linearized(speed, static_load) -> (K, C)
     Stiffness [N/m, N/rad, N m/rad] and damping coefficients on ``dof_names`` at the operating
     point: ``static_load`` is what the shaft puts on the bearing at static equilibrium
@@ -48,10 +51,13 @@ static_displacement(speed, static_load) -> q
     The displacement (node DOFs followed by internal DOFs) at which the bearing alone carries
     ``static_load``: the start of the rotor's static equilibrium, exact for a statically
     determinate rotor.  The default solves the linearised bearing.
-at_operating_point(speed, static_load) -> bearing
+at_operating_point(speed, static_load, transient=False) -> bearing
     The same bearing with everything the operating point sets held fixed (a fluid film: the
-    viscosity of its thermal equilibrium), for a nonlinear analysis about that point (static
-    equilibrium, transient).  Bearings with no such quantity return themselves.
+    viscosity of its thermal equilibrium), for a nonlinear analysis about that point: the static
+    equilibrium, or with ``transient=True`` a time integration, which evaluates the reaction some
+    1e5 times along a trajectory and may get a reduced model where it is exact enough (a fluid
+    film's tabulated force, ``fluidfilm.film_table``).  Bearings with no such quantity return
+    themselves.
 frequencies_hz(speed) -> dict[str, float]
     Characteristic excitation frequencies, e.g. {"cage": .., "roller_pass": ..}: the transient
     samples a Poincare map once per period of each and marks them on its spectrum.
@@ -94,7 +100,10 @@ class Bearing(Protocol):
 
     def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray: ...
 
-    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None) -> "Bearing": ...
+    def force(self, q: np.ndarray, v: np.ndarray, t: float, speed: float, angle: float | None = None) -> np.ndarray: ...
+
+    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None,
+                           transient: bool = False) -> "Bearing": ...
 
     def frequencies_hz(self, speed: float) -> dict[str, float]: ...
 
@@ -127,7 +136,10 @@ class BearingBase:
             q[:n] = np.linalg.lstsq(K, np.asarray(static_load, float)[:n], rcond=None)[0]
         return q
 
-    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None):
+    def force(self, q, v, t, speed, angle=None) -> np.ndarray:
+        return self.force_and_tangent(q, v, t, speed, angle)[0]
+
+    def at_operating_point(self, speed: float, static_load: np.ndarray | None = None, transient: bool = False):
         return self
 
     def frequencies_hz(self, speed: float) -> dict[str, float]:

@@ -131,7 +131,7 @@ def test_satisfies_the_contract():
         x = rng.normal(size=n) * 1e-7
         v = rng.normal(size=n) * 1e-4
         ref = b.generalized_force(b.absolute(x), v, 5000 * RPM, 0.37)
-        assert np.max(np.abs(b.force(x, v, 5000 * RPM, 0.37) - ref)) <= 1e-9 * np.max(np.abs(ref))
+        assert np.max(np.abs(b.force(x, v, 0.0, 5000 * RPM, 0.37) - ref)) <= 1e-9 * np.max(np.abs(ref))
     # roller spin with no slip: the outer contact point of a roller is at rest (pure rolling)
     w = 5000 * RPM
     wc = KIN.cage_ratio * w

@@ -120,7 +120,7 @@ def prepare(rotor: Rotor, settings: TransientSettings) -> Prepared:
     T = settings.duration_s
     deck_speed = rotor.speed_rpm
     start_rpm, stop_rpm = settings.speed_rpm or (deck_speed, deck_speed)
-    op = operating_state(rotor, deck_speed)  # bearings frozen at the deck's operating point
+    op = operating_state(rotor, deck_speed, transient=True)  # bearings frozen at the deck's operating point
     if start_rpm == deck_speed:
         st = op
     else:

@@ -149,11 +149,13 @@ class RotorSystem:
         C = np.zeros((N, N)) if with_tangent else None
         each = []
         for b, gi in zip(self.bearings, self.index):
-            fb, kb, cb = b.force_and_tangent(x[gi], v[gi], t, W, phi)
-            f[gi] += fb
             if with_tangent:
+                fb, kb, cb = b.force_and_tangent(x[gi], v[gi], t, W, phi)
                 K[np.ix_(gi, gi)] += kb
                 C[np.ix_(gi, gi)] += cb
+            else:
+                fb = b.force(x[gi], v[gi], t, W, phi)
+            f[gi] += fb
             each.append(fb)
         return f, K, C, each
 

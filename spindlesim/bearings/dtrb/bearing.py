@@ -184,7 +184,7 @@ class DtrbBearing(BearingBase):
         """Ring displacement at the equilibrium under the static (and the deck's axial) load."""
         return self.equilibrium(self.full_load(static_load), speed).displacement[: len(self.dof_names)].copy()
 
-    def at_operating_point(self, speed: float, static_load=None) -> "DtrbBearing":
+    def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "DtrbBearing":
         """A radial (x, y) bearing holds axial motion and tilt at the equilibrium under the static
         load and the deck's axial load; a 5-DOF bearing has nothing to hold."""
         if len(self.dof_names) == 5:

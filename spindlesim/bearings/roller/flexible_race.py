@@ -254,7 +254,11 @@ class FlexibleRaceBearing(BearingBase):
 
         return kernel.pack(self)
 
-    def force(self, q: np.ndarray, v: np.ndarray, speed: float, angle: float) -> np.ndarray:
+    def force(self, q, v, t: float = 0.0, speed: float = 0.0, angle=None) -> np.ndarray:
+        """Contract: the compiled force alone (the tangent is by differences of it)."""
+        return self._force(q, v, speed, shaft_angle(speed, t, angle))
+
+    def _force(self, q: np.ndarray, v: np.ndarray, speed: float, angle: float) -> np.ndarray:
         """Compiled force on the contract coordinates."""
         from . import flexible_race_kernel as kernel
 
@@ -275,7 +279,7 @@ class FlexibleRaceBearing(BearingBase):
         a = shaft_angle(speed, t, angle)
         q = np.asarray(q, float)
         v = np.asarray(v, float)
-        f = self.force(q, v, speed, a)
+        f = self._force(q, v, speed, a)
         dq, dv = self._steps()
         n = q.size
         K = np.empty((n, n))
@@ -283,9 +287,9 @@ class FlexibleRaceBearing(BearingBase):
         for k in range(n):
             e = np.zeros(n)
             e[k] = dq[k]
-            K[:, k] = -(self.force(q + e, v, speed, a) - self.force(q - e, v, speed, a)) / (2 * dq[k])
+            K[:, k] = -(self._force(q + e, v, speed, a) - self._force(q - e, v, speed, a)) / (2 * dq[k])
             e[k] = dv[k]
-            C[:, k] = -(self.force(q, v + e, speed, a) - self.force(q, v - e, speed, a)) / (2 * dv[k])
+            C[:, k] = -(self._force(q, v + e, speed, a) - self._force(q, v - e, speed, a)) / (2 * dv[k])
         return f, K, C
 
     def _condensed(self, q: np.ndarray, speed: float, angle: float) -> np.ndarray:
@@ -326,7 +330,7 @@ class FlexibleRaceBearing(BearingBase):
         kernel.outer_loads(fl, it, qc, vc, speed, a, loads)
         Q = qc[2 + self.rollers:].reshape(-1, 3)
         er = np.column_stack([np.cos(self.ring.phi), np.sin(self.ring.phi)])
-        return {"force": (self.force(qc, vc, speed, a)[:2], "N"), "roller_load_N": (loads, "N"),
+        return {"force": (self._force(qc, vc, speed, a)[:2], "N"), "roller_load_N": (loads, "N"),
                 "race_deflection_m": (np.sum(Q[:, 0:2] * er, axis=1), "m")}
 
     def compiled(self) -> CompiledForce:
