@@ -21,12 +21,16 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "campbell": ("campbell", "Campbell diagram with tracked modes and critical speeds."),
     "frf": ("frf", "Complex frequency response (receptance) between two DOFs."),
     "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
-    "thermal": ("thermal", "Thermal equilibrium of fluid-film bearings (seed 003 eqs. 4-14)."),
+    "thermal": ("thermal", "Thermal equilibrium of fluid-film bearings (heat balance of film, oil flow and housing)."),
     "coefficients": ("coefficients", "Fluid-film bearing stiffness and damping at thermal equilibrium."),
-    "transient": ("transient", "Time simulation: rotor in a roller bearing (seed 000) or a rotor on a DTRB (seed 001)."),
+    "transient": ("transient", "Time response of any rotor with its bearings' nonlinear reactions (run-up, whirl, roller pass)."),
+    "bearing": ("bearing", "One bearing (set) under a load: ball bearing stiffness, contact angles, life; or a DTRB."),
     "dtrb": ("dtrb", "Double-row tapered roller bearing: load distribution, 5x5 stiffness, preload/load sweeps."),
+    "chatter": ("chatter", "Chatter stability lobes from the tool-point FRF (rotor at every speed, tap test or file)."),
     "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
     "run": ("run", "Every analysis the deck lists."),
+    "decks": ("decks", "The embedded decks (defaults and examples); `decks show NAME` prints one to start from."),
+    "schema": ("schema", "The deck's JSON schema (editor completion and checking)."),
     "sweep": ("sweep", "Parameter study over any deck value (process pool or Dask), resumable."),
 }
 
@@ -50,12 +54,15 @@ class LazyGroup(click.Group):
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="spindlesim")
 @click.option("-v", "--verbose", count=True, help="More log output on stderr (-v info, -vv debug).")
-def main(verbose: int) -> None:
+@click.option("--strict", is_flag=True, help="Treat deck plausibility warnings (likely unit mistakes) as errors (exit 2).")
+@click.pass_context
+def main(ctx: click.Context, verbose: int, strict: bool) -> None:
     """spindlesim: static and dynamic analysis of machine-tool spindles from YAML decks.
 
     Every subcommand takes an optional DECK (without one, an embedded default
     deck is used) and -o OUTDIR (default out/<deck stem>).
     """
+    ctx.meta["spindlesim.strict"] = strict  # read by commands.common.load_or_default
     level = logging.WARNING - 10 * min(verbose, 2)
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
     os.environ.setdefault("MPLBACKEND", "Agg")

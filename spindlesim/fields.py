@@ -6,35 +6,136 @@ define its own deck section next to its physics without importing the deck loade
 conversion to SI happens in one builder per section.
 
 Every float is finite: ``.inf`` and ``.nan`` are refused at validation with the key's line.
+Every number is also within a physical range: a key whose name ends in a unit (``_mm``,
+``_GPa``, ``_rpm`` ...) is checked against :data:`UNIT_RANGES` (a field validator of
+:class:`DeckModel`, so every section gets it), and a key without a unit has its bounds in its
+own ``Field``.  ``tests/unit/test_deck_limits.py`` walks the schema to keep it that way.
 """
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
+
+#: largest magnitude of a number that has no unit (sweep values, range ends; their key's unit applies too)
+ANY_NUMBER = 1e15
+
+#: physical range (smallest, largest) of a value by the unit its key ends with; the longest suffix wins.
+#: Wide on purpose: these catch impossible numbers (E_GPa 1e30, a speed of 1e12 rpm); the plausibility
+#: warnings (deck/plausibility.py) catch the likely unit mistakes inside them.
+UNIT_RANGES: dict[str, tuple[float, float]] = {
+    "_mm": (-1e10, 1e10),           # up to 1e10 mm: a crown radius of 1e9 mm is a straight roller
+    "_um": (-1e5, 1e5),             # up to 0.1 m
+    "_GPa": (1e-4, 2e3),            # 0.1 MPa (soft elastomer) .. above diamond
+    "_kg_m3": (0.0, 1e5),
+    "_kg": (0.0, 1e6),
+    "_kg_m2": (0.0, 1e6),
+    "_N": (-1e9, 1e9),
+    "_Nm": (-1e9, 1e9),
+    "_N_mm2": (0.0, 1e6),           # specific cutting forces
+    "_rpm": (-1e6, 1e6),
+    "_hz": (0.0, 1e9),
+    "_s": (0.0, 1e5),
+    "_us": (0.0, 1e6),
+    "_N_m": (-1e13, 1e13),          # stiffness
+    "_Ns_m": (-1e10, 1e10),         # damping
+    "_Nm_rad": (0.0, 1e12),
+    "_Nms_rad": (0.0, 1e9),
+    "_Ns_mm": (0.0, 1e7),
+    "_N_m2": (0.0, 1e15),           # stiffness per metre of bore
+    "_Ns_m2": (0.0, 1e13),
+    "_N_per_m_n": (0.0, 1e14),      # Hertz constant K of Q = K delta^n
+    "_m_s": (0.0, 1e4),
+    "_m_s2": (0.0, 1e4),
+    "_Pa_s": (0.0, 1e3),
+    "_J_kgK": (0.0, 1e5),
+    "_C": (-273.15, 2000.0),
+    "_m2": (0.0, 1e4),
+    "_W_m2K": (0.0, 1e6),
+    "_deg": (-1e4, 1e4),
+    "_g_mm": (0.0, 1e8),
+    "_percent": (0.0, 100.0),
+}
+_SUFFIXES = sorted(UNIT_RANGES, key=len, reverse=True)
+
+
+def unit_text(suffix: str) -> str:
+    """``N/m`` for ``_N_m``: the unit of a key suffix as a reader writes it."""
+    special = {"_N_per_m_n": "N/m^n", "_g_mm": "g mm", "_Pa_s": "Pa s", "_J_kgK": "J/(kg K)",
+               "_W_m2K": "W/(m2 K)", "_percent": "%"}
+    return special.get(suffix, suffix[1:].replace("_", "/"))
+
+
+def unit_range(key: str) -> tuple[str, tuple[float, float]] | None:
+    """(unit suffix, range) of a deck key, or None when its name carries no unit."""
+    for suffix in _SUFFIXES:
+        if key.endswith(suffix) and len(key) > len(suffix):
+            return suffix, UNIT_RANGES[suffix]
+    return None
+
+
+def _first_out_of_range(value: Any, lo: float, hi: float, where: str = "") -> tuple[str, float] | None:
+    """The first number in ``value`` (a number, nested lists, or a {start, stop} range) outside [lo, hi]."""
+    if isinstance(value, bool) or value is None:
+        return None
+    if isinstance(value, (int, float)):
+        return None if lo <= value <= hi else (where, value)
+    if isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            bad = _first_out_of_range(v, lo, hi, f"{where}[{i}]")
+            if bad is not None:
+                return bad
+        return None
+    if isinstance(value, BaseModel):
+        for key in ("start", "stop"):
+            v = getattr(value, key, None)
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and not lo <= v <= hi:
+                return f"{where}.{key}", v
+    return None
 
 
 class DeckModel(BaseModel):
-    """Base of every deck section: unknown keys rejected, strict types, immutable, finite floats."""
+    """Base of every deck section: unknown keys rejected, strict types, immutable, finite floats,
+    numbers within the physical range of their unit, text at most 4096 characters."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True, strict=True, allow_inf_nan=False)
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=True, allow_inf_nan=False,
+                              str_max_length=4096)
+
+    @field_validator("*", mode="after")
+    @classmethod
+    def _physical_range(cls, value: Any, info: ValidationInfo) -> Any:
+        unit = unit_range(info.field_name or "")
+        if unit is None or value is None:
+            return value
+        suffix, (lo, hi) = unit
+        bad = _first_out_of_range(value, lo, hi)
+        if bad is not None:
+            where, v = bad
+            raise ValueError(f"{info.field_name}{where} = {v:g} is outside the physical range of a value in "
+                             f"{unit_text(suffix)} ({lo:g} .. {hi:g})")
+        return value
 
 
 PositiveFloat = Annotated[float, Field(gt=0)]
 NonNegFloat = Annotated[float, Field(ge=0)]
 Fraction = Annotated[float, Field(ge=0.0, lt=1.0)]
+#: a number with no unit of its own (range ends, sweep values): finite and below 1e15 in magnitude
+AnyNumber = Annotated[float, Field(ge=-ANY_NUMBER, le=ANY_NUMBER)]
+#: a node number; the loader checks it against the rotor's nodes (at most deck.limits.MAX_NODES)
 NodeNumber = Annotated[int, Field(ge=1, le=100_000, description="1-based node number")]
 Matrix2 = Annotated[
     list[Annotated[list[float], Field(min_length=2, max_length=2)]],
     Field(min_length=2, max_length=2),
 ]
 Dof = Literal["x", "y", "theta_x", "theta_y"]
+#: the most points of an evenly spaced range (speeds, frequencies, sweeps)
+RANGE_COUNT_MAX = 100_000
 
 
 class Range(DeckModel):
-    """An evenly spaced range ``{start, stop, count}`` (both ends included)."""
+    """An evenly spaced range ``{start, stop, count}`` (both ends included); the unit of its key applies."""
 
-    start: NonNegFloat
-    stop: PositiveFloat
-    count: Annotated[int, Field(ge=2, le=1_000_000)]
+    start: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
+    stop: Annotated[float, Field(gt=0, le=ANY_NUMBER)]
+    count: Annotated[int, Field(ge=2, le=RANGE_COUNT_MAX)]

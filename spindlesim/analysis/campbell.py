@@ -10,6 +10,7 @@ AF < 2.5 is critically damped and not a critical speed).
 
 from __future__ import annotations
 
+import functools
 import logging
 from typing import Callable
 
@@ -19,7 +20,8 @@ from scipy.optimize import linear_sum_assignment
 from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
 from .modal import modal_from_matrices
-from .operating import system_matrices
+from .operating import frozen_bearings, operating_state, system_matrices
+from .reduced import checked_basis
 from .results import CampbellResult
 
 log = logging.getLogger(__name__)
@@ -33,9 +35,28 @@ def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
-                   progress: Callable[[int, int], None] | None = None) -> CampbellResult:
+                   progress: Callable[[int, int], None] | None = None,
+                   frozen_rpm: float | None = None, exact: bool = False) -> CampbellResult:
+    """Tracked modes over ``speeds_rpm``; the bearings are linearised at the static state of every
+    speed, or with ``frozen_rpm`` held at their coefficients of that speed (gyroscopics still vary).
+    The modes come from the reduced model (``reduced``), or with ``exact`` from the full state-space
+    QR solution at every speed."""
     speeds = np.asarray(speeds_rpm, float)
     shaft = assemble_shaft(rotor)
+    system = None if frozen_rpm is None else frozen_bearings(rotor, frozen_rpm, shaft)
+    total = 2 * len(speeds) if system is None else len(speeds)
+    done = [0]
+
+    def tick():
+        done[0] += 1
+        if progress is not None:
+            progress(done[0], total)
+
+    states, stopped = None, ""
+    if system is None:
+        states, stopped = static_states(rotor, shaft, speeds, tick)
+        speeds = speeds[: len(states)]
+        total = 2 * len(speeds)
     n_track = n_modes
     extra = max(4, n_modes // 2)  # spare modes so a mode leaving the window can be replaced
     freq = np.full((len(speeds), n_track), np.nan)
@@ -44,7 +65,8 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     whirl = np.full(freq.shape, "", dtype=object)
     prev_shapes = None
     prev_freq = None
-    for i, (s, m) in enumerate(zip(speeds, _modal_at_speeds(rotor, shaft, speeds, n_modes + extra))):
+    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + extra, states, system, exact, n_check=n_modes)
+    for i, (s, m) in enumerate(zip(speeds, modal)):
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
         if prev_shapes is None:
             take = np.arange(min(n_track, len(m.frequency_hz)))
@@ -67,32 +89,68 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
         valid = cols >= 0
         prev_shapes = shapes[cols[valid]] if prev_shapes is not None else shapes[: len(take)]
         prev_freq = m.frequency_hz[cols[valid]] if prev_freq is not None else m.frequency_hz[: len(take)]
-        if progress is not None:
-            progress(i + 1, len(speeds))
+        tick()
     crit, crit_mode = critical_speeds(speeds, freq, whirl, zeta)
     return CampbellResult(speed_rpm=speeds, frequency_hz=freq, log_dec=logdec, damping_ratio=zeta,
-                          whirl=whirl.astype(str), critical_speeds_rpm=crit, critical_modes=crit_mode)
+                          whirl=whirl.astype(str), critical_speeds_rpm=crit, critical_modes=crit_mode, model=model,
+                          incomplete_reason=stopped)
+
+
+def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], None] | None = None):
+    """(static states, "") at every speed, each warm-started from its neighbour's; when one fails,
+    the states before it and the reason ("stopped at ... rpm: ..."); the first speed's failure is
+    raised (nothing to show)."""
+    states, st = [], None
+    for s in speeds:
+        try:
+            st = operating_state(rotor, s, shaft, start=st)
+        except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
+            if not states:
+                raise
+            reason = f"stopped at {s:g} rpm (speeds from {speeds[0]:g} to {speeds[len(states) - 1]:g} rpm done): {exc}"
+            log.warning("Campbell diagram %s", reason)
+            return states, reason
+        states.append(st)
+        if tick is not None:
+            tick()
+    return states, ""
 
 
 API684_MIN_AF = 2.5
 
 
-def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int):
-    """Modal results at every speed, computed on all cores (LAPACK releases the GIL; each thread
-    uses single-threaded BLAS), yielded in speed order for the sequential mode tracking."""
+def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, states=None, system=None,
+                     exact: bool = False, n_check: int | None = None):
+    """(description of the model used, iterator over the modal results at every speed).  The speeds
+    are solved on all cores (LAPACK releases the GIL; each thread uses single-threaded BLAS) and
+    yielded in speed order for the sequential mode tracking."""
     import os
     from concurrent.futures import ThreadPoolExecutor
 
-    def one(s: float):
-        sysm = system_matrices(rotor, s, shaft=shaft)
-        return modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes, s)
+    expand, model = None, "full state space"
+    if system is None:  # the static state of each speed (static_states)
+        basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check)
+        if basis is None:
+            matrices = [functools.partial(system_matrices, rotor, state=st) for st in states]
+        else:
+            matrices = [functools.partial(basis.system, st) for st in states]
+            expand = basis.T
+            model = f"reduced: {basis.size} of {shaft.M.shape[0]} coordinates"
+    else:
+        matrices = [functools.partial(system, s) for s in speeds]
 
-    workers = min(len(speeds), os.cpu_count() or 1)
-    if workers <= 1:
-        yield from (one(s) for s in speeds)
-        return
-    with ThreadPoolExecutor(max_workers=workers) as ex:
-        yield from ex.map(one, speeds)
+    def one(k: int):
+        return modal_from_matrices(matrices[k](), rotor.dofs, rotor.node_z_m, n_modes, speeds[k], expand)
+
+    def results():
+        workers = min(len(speeds), os.cpu_count() or 1)
+        if workers <= 1:
+            yield from (one(k) for k in range(len(speeds)))
+            return
+        with ThreadPoolExecutor(max_workers=workers) as ex:
+            yield from ex.map(one, range(len(speeds)))
+
+    return model, results()
 
 
 def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarray,

@@ -9,7 +9,8 @@ Roots with zeta >= 0.999 (real roots included, one of each conjugate pair) and
 roots below 1 mHz (rigid-body) are reported apart from the mode list.
 Whirl direction at a node from the complex (x, y) amplitudes: the orbit is the
 sum of a forward circle of radius |x + i y| / 2 and a backward one of radius
-|x - i y| / 2 (spin about +z); forward when the first is larger.
+|x - i y| / 2 (spin about +z); forward when the first is larger.  A mode whose lateral
+translations are below 1 % of its axial one (rotors with the axial DOF) is "axial".
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from .results import ModalResult
 
 RIGID_BODY_RAD_S = 1e-3 * 2 * np.pi  # roots below 1 mHz are rigid-body roots
 OVERDAMPED_ZETA = 0.999  # damping ratio at or above this: reported with the overdamped roots
+AXIAL_SHARE = 0.1  # largest lateral translation below this share of the axial one: an axial mode
 
 
 def state_matrix(sysm: SystemMatrices) -> np.ndarray:
@@ -52,8 +54,9 @@ def whirl_of(shape_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[str, float]
 
 
 def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_modes: int,
-                        speed_rpm: float) -> ModalResult:
-    """Modes of assembled matrices; ``dofs`` is the rotor's DofMap (mode shapes keep x, y, theta_x, theta_y)."""
+                        speed_rpm: float, expand: np.ndarray | None = None) -> ModalResult:
+    """Modes of assembled matrices; ``dofs`` is the rotor's DofMap (mode shapes keep x, y, theta_x, theta_y).
+    ``expand`` maps the matrices' coordinates to the rotor's DOFs (a reduced model's basis T)."""
     n_nodes = dofs.n_nodes
     A = state_matrix(sysm)
     # numpy's geev wrapper releases the GIL (scipy's does not), so Campbell sweeps can use threads
@@ -66,16 +69,20 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     osc = (~rigid) & (~real) & (lam.imag > 0)
     order = np.flatnonzero(osc)[np.argsort(lam.imag[osc])][:n_modes]
     lam_m = lam[order]
-    per_node = vec[:n, order].T.reshape(len(order), n_nodes, -1)
+    q = vec[:n, order] if expand is None else expand @ vec[:n, order]
+    per_node = q.T.reshape(len(order), n_nodes, -1)
     shapes = np.zeros((len(order), n_nodes, 4), complex)  # (x, y, theta_x, theta_y); absent DOFs stay 0
     for k, d in enumerate(DOFS_4):
         if d in dofs.names:
             shapes[:, :, k] = per_node[:, :, dofs.names.index(d)]
-    # normalise: largest translation becomes 1 + 0j
-    trans = shapes[:, :, :2].reshape(len(order), -1)
+    # normalise: the largest translation (x, y, or z where the rotor has it) becomes 1 + 0j
+    axial = per_node[:, :, dofs.names.index("z")] if "z" in dofs.names else np.zeros((len(order), n_nodes))
+    trans = np.concatenate([shapes[:, :, :2].reshape(len(order), -1), axial], axis=1)
     ref = trans[np.arange(len(order)), np.argmax(np.abs(trans), axis=1)]
     shapes = shapes / ref[:, None, None]
-    whirls, shares = zip(*(whirl_of(s[:, :2]) for s in shapes)) if len(order) else ((), ())
+    lateral = np.max(np.abs(shapes[:, :, :2]).reshape(len(order), -1), axis=1) if len(order) else np.zeros(0)
+    whirls, shares = zip(*(("axial", 0.5) if lat < AXIAL_SHARE else whirl_of(s[:, :2])
+                           for s, lat in zip(shapes, lateral))) if len(order) else ((), ())
     zeta = -lam_m.real / np.abs(lam_m)
     return ModalResult(
         speed_rpm=speed_rpm, eigenvalues=lam_m, frequency_hz=lam_m.imag / (2 * np.pi),

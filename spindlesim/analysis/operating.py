@@ -46,6 +46,19 @@ class SingularRotorError(ValueError):
     """The rotor is not held against rigid-body motion in the direction of its loads."""
 
 
+class BearingSolveError(ValueError):
+    """A bearing's own solver failed at an operating point; the message names the bearing and the speed."""
+
+
+def _freeze(b, speed: float, load, transient: bool):
+    """``b.at_operating_point`` with a failure named by bearing and speed (a thermal equilibrium not
+    found, a film that cannot carry the load ...)."""
+    try:
+        return b.at_operating_point(speed, load, transient)
+    except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
+        raise BearingSolveError(f"bearing {b.name!r} at {speed / RPM:.6g} rpm: {exc}") from exc
+
+
 @dataclass(frozen=True)
 class SystemMatrices:
     """M q'' + C q' + K q = Q at one spin speed, bearings included (seed 003 eq. 21)."""
@@ -70,6 +83,7 @@ class OperatingState:
     bearings: tuple  # the rotor's bearings frozen at their operating points
     loads: tuple[np.ndarray, ...]  # what the shaft puts on each bearing, on its dof_names (= -f_b)
     operating_loads: tuple[np.ndarray, ...]  # the loads the bearings were frozen and are linearised at
+    coefficients: tuple[tuple[np.ndarray, np.ndarray], ...]  # each bearing's linearized() there (K, C)
     bearing_index: tuple[np.ndarray, ...]  # rotor DOF indices of each bearing's dof_names
     Q: np.ndarray  # static load vector
     shaft: ShaftMatrices
@@ -118,53 +132,70 @@ def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
 
 def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMatrices | None = None,
                     tol: float = 1e-10, max_iter: int = 100, freeze: bool = True,
-                    transient: bool = False) -> OperatingState:
+                    transient: bool = False, start: OperatingState | None = None) -> OperatingState:
     """Static equilibrium at ``speed_rpm`` (default: the rotor's) with the bearings' nonlinear reactions.
 
     ``freeze=False`` takes the bearings as they are (already frozen at an operating point, e.g.
     the deck speed's, for the start of a run-up); ``transient=True`` freezes them for a time
-    integration (the contract's ``at_operating_point``)."""
+    integration (the contract's ``at_operating_point``); ``start`` is the state of a neighbouring
+    speed to start from (a Campbell diagram's previous speed)."""
     speed = (rotor.speed_rpm if speed_rpm is None else speed_rpm) * RPM
     shaft = assemble_shaft(rotor) if shaft is None else shaft
     K_s = shaft.stiffness(speed)
     Q = load_vector(rotor, shaft)
     idx = bearing_indices(rotor)
-    loads = _stiff_support_loads(rotor, shaft, K_s, Q, idx)
     n = K_s.shape[0]
-    internal = [np.zeros(b.internal_mass.size) for b in rotor.bearings]
-    q = None
+    if start is None:
+        loads = _stiff_support_loads(rotor, shaft, K_s, Q, idx)
+        internal = [np.zeros(b.internal_mass.size) for b in rotor.bearings]
+        q = None
+        K_lin = None
+    else:
+        loads, q, internal = list(start.operating_loads), start.q.copy(), [z.copy() for z in start.internal]
+        K_lin = system_matrices(rotor, state=start).K
+    coef = None
     total = 0
+    frozen = None
     for outer in range(10):
-        frozen = tuple(b.at_operating_point(speed, w, transient) if freeze else b for b, w in zip(rotor.bearings, loads))
+        previous = frozen
+        frozen = tuple(_freeze(b, speed, w, transient) if freeze else b for b, w in zip(rotor.bearings, loads))
+        if previous is not None and all(a is b for a, b in zip(frozen, previous)):
+            break  # nothing the loads set has changed: the equilibrium found stands
         if q is None:
-            q, internal, K_lin = _affine_start(frozen, idx, K_s, Q, loads, speed)
+            q, internal, K_lin, coef = _affine_start(frozen, idx, K_s, Q, loads, speed)
         q, internal, f, its = _newton(rotor, frozen, idx, K_s, Q, q, internal, speed, tol, max_iter, np.diag(K_lin))
         total += its
         new = [-fb[: len(i)] for fb, i in zip(f, idx)]
         scale = max(max((float(np.max(np.abs(w))) for w in new), default=0.0), 1e-9)
         change = max((float(np.max(np.abs(a - b))) for a, b in zip(new, loads)), default=0.0) / scale
+        if change > LOAD_TOL:
+            coef = None  # the coefficients of the start are no longer those of the operating loads
+        loads = new if change > LOAD_TOL else loads
         if change <= LOAD_TOL or not freeze:
             break
-        loads = new
     else:
         log.warning("bearing loads still change by %.2g after 10 operating-point updates", change)
-    return OperatingState(speed, q, tuple(internal), frozen, tuple(new), tuple(loads), idx, Q, shaft, total)
+    if coef is None:
+        coef = [b.linearized(speed, w) for b, w in zip(frozen, loads)]
+    return OperatingState(speed, q, tuple(internal), frozen, tuple(new), tuple(loads), tuple(coef), idx, Q, shaft,
+                          total)
 
 
 def _affine_start(bearings, idx, K_s, Q, loads, speed):
     """Start of Newton: each bearing replaced by f_b = -W_b - K_b (q_b - d_b) about the displacement
     d_b that carries its estimated load W_b (``static_displacement``): exact when the loads are."""
     K, r = K_s.copy(), Q.copy()
-    internal = []
+    internal, coef = [], []
     for b, i, w in zip(bearings, idx, loads):
-        kb, _ = b.linearized(speed, w)
+        kb, cb = b.linearized(speed, w)
+        coef.append((kb, cb))
         d = b.static_displacement(speed, w)
         K[np.ix_(i, i)] += kb
         r[i] += kb @ d[: len(i)] - w
         internal.append(np.asarray(d[len(i):], float))
     what = "the rotor on its linearised bearings"
     _solve(K, Q, what)  # the loads themselves must be carried (raises when a direction is not held)
-    return _solve(K, r, what), internal, K
+    return _solve(K, r, what), internal, K, coef
 
 
 def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_diag):
@@ -242,6 +273,25 @@ def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_d
         f"(largest at DOF {int(np.argmax(np.abs(R)))})")
 
 
+def frozen_bearings(rotor: Rotor, speed_rpm: float, shaft: ShaftMatrices | None = None):
+    """speed [rpm] -> SystemMatrices with the bearings' K and C held at their values at ``speed_rpm``
+    (and its static state) and the shaft at the given speed: what a Campbell diagram with speed-
+    independent bearing coefficients computes, the reference for the effect of speed on them."""
+    st = operating_state(rotor, speed_rpm, shaft)
+    coef = st.coefficients
+
+    def at(speed: float) -> SystemMatrices:
+        W = speed * RPM
+        K = st.shaft.stiffness(W).copy()
+        C = st.shaft.damping(W).copy()
+        for (kb, cb), i in zip(coef, st.bearing_index):
+            K[np.ix_(i, i)] += kb
+            C[np.ix_(i, i)] += cb
+        return SystemMatrices(M=st.shaft.M, C=C, K=K, speed_rad_s=W)
+
+    return at
+
+
 def _force_scale(load_scale: float, forces) -> float:
     """The largest force in the balance (loads and bearing forces): the residual's round-off scale."""
     return max(load_scale, max((float(np.max(np.abs(fb))) for fb in forces if fb.size), default=0.0))
@@ -253,8 +303,7 @@ def system_matrices(rotor: Rotor, speed_rpm: float | None = None, state: Operati
     st = operating_state(rotor, speed_rpm, shaft) if state is None else state
     K = st.shaft.stiffness(st.speed_rad_s).copy()
     C = st.shaft.damping(st.speed_rad_s).copy()
-    for b, i, w in zip(st.bearings, st.bearing_index, st.operating_loads):
-        kb, cb = b.linearized(st.speed_rad_s, w)
+    for (kb, cb), i in zip(st.coefficients, st.bearing_index):
         K[np.ix_(i, i)] += kb
         C[np.ix_(i, i)] += cb
     return SystemMatrices(M=st.shaft.M, C=C, K=K, speed_rad_s=st.speed_rad_s)

@@ -49,6 +49,8 @@ class CampbellResult:
     whirl: np.ndarray  # [speed, mode] strings
     critical_speeds_rpm: np.ndarray  # 1x line crossing a forward mode
     critical_modes: np.ndarray  # tracked mode index of each critical speed
+    model: str = "full state space"  # or "reduced: m of n coordinates" (analysis/reduced.py)
+    incomplete_reason: str = ""  # set when a speed's static state failed: the speeds before it only
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,7 @@ from typing import Any, Callable
 
 from pydantic import BaseModel
 
+from .ball import section as ball
 from .dtrb import section as dtrb
 from .fluidfilm import section as fluidfilm
 from .linear import section as linear
@@ -34,6 +35,8 @@ BEARING_TYPES: dict[str, BearingType] = {
                          "plain fluid-film journal bearing (360 deg or grooved)"),
     "roller": BearingType(roller.RollerEntry, roller.build,
                           "cylindrical roller bearing, rigid or flexible outer race (Jung et al. 2007)"),
+    "ball": BearingType(ball.BallBearingEntry, ball.build,
+                        "angular-contact / deep-groove ball bearing or set, quasi-static with speed effects (Jones 1960)"),
     "dtrb": BearingType(dtrb.DtrbBearingEntry, dtrb.build,
                         "double-row tapered roller bearing, quasi-static (Kim et al. 2023)"),
 }

@@ -1,7 +1,7 @@
 import click
 import numpy as np
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 def _speeds(ctx, param, value):
@@ -20,9 +20,12 @@ def _speeds(ctx, param, value):
 @click.command("campbell")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--speeds", callback=_speeds, default=None, metavar="START:STOP:COUNT",
               help="Speed range in rpm (default: deck campbell.speeds_rpm).")
 @click.option("--modes", type=click.IntRange(min=1), default=None, help="Modes to track.")
-def command(deck, outdir, speeds, modes):
+@click.option("--exact", is_flag=True, help="Solve the full state-space model at every speed instead of the "
+              "reduced model (the reduced one is checked against it at the first and last speed).")
+def command(deck, outdir, speeds, modes, exact):
     """Campbell diagram: tracked modes, log decrement and critical speeds over a speed range."""
-    run_and_report("campbell", deck, outdir, "spindle", {"speeds_rpm": speeds, "modes": modes})
+    run_and_report("campbell", deck, outdir, "spindle", {"speeds_rpm": speeds, "modes": modes, "exact": exact})

@@ -2,12 +2,13 @@
 
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("coefficients")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Eight K/C coefficients at the thermal equilibrium of every three_lobe/plain bearing."""

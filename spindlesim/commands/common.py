@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+import json
 import logging
 import sys
 from pathlib import Path
@@ -17,21 +19,46 @@ outdir_option = click.option("-o", "--outdir", type=click.Path(file_okay=False, 
                              help="Output directory [default: out/<deck stem>].")
 
 
+def strict_mode() -> bool:
+    """``spindlesim --strict``: plausibility warnings are errors (click context, or SPINDLESIM_STRICT=1)."""
+    import os
+
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.meta.get("spindlesim.strict"):
+        return True
+    return os.environ.get("SPINDLESIM_STRICT", "") not in ("", "0")
+
+
 def load_or_default(deck: Path | None, default_name: str):
-    """Load DECK, or the embedded default deck; on a bad deck print every issue and exit 2."""
+    """Load DECK, or the embedded default deck; on a bad deck print every issue and exit 2.
+
+    Plausibility warnings are printed (located, on stderr) and the command goes on; with
+    ``--strict`` they are errors (exit 2).
+    """
+    from dataclasses import replace
+
     from ..deck import DeckError, default_deck, load_deck
 
     try:
-        return load_deck(deck) if deck is not None else default_deck(default_name)
+        loaded = load_deck(deck) if deck is not None else default_deck(default_name)
     except DeckError as exc:
         report_deck_error(exc)
+    if loaded.warnings and strict_mode():
+        report_deck_error(DeckError([replace(w, severity="error") for w in loaded.warnings]),
+                          note=" (--strict: plausibility warnings are errors)")
+    for w in loaded.warnings:
+        click.echo(str(w), err=True)
+    return loaded
 
 
-def report_deck_error(exc) -> None:
+def report_deck_error(exc, note: str = "") -> None:
     """Print every located deck issue and exit with code 2."""
     for issue in exc.issues:
         click.echo(str(issue), err=True)
-    click.echo(f"spindlesim: {len(exc.issues)} error(s) in the deck; nothing was written.", err=True)
+    total = getattr(exc, "total", len(exc.issues))
+    if total > len(exc.issues):
+        click.echo(f"... and {total - len(exc.issues)} more", err=True)
+    click.echo(f"spindlesim: {total} error(s) in the deck{note}; nothing was written.", err=True)
     sys.exit(2)
 
 
@@ -61,9 +88,55 @@ def progress_reporter(label: str) -> tuple[Callable[[int, int], None], Callable[
     return update, close
 
 
+def report_options(fn):
+    """--quiet / --json on a command: how run_and_report prints the results (stored on the click context)."""
+
+    @click.option("--json", "json_", is_flag=True, help="Print the written paths and the results summary as JSON.")
+    @click.option("-q", "--quiet", is_flag=True, help="Print only the written file paths, no results summary.")
+    @functools.wraps(fn)
+    def wrapper(*args, quiet: bool = False, json_: bool = False, **kwargs):
+        click.get_current_context().meta["spindlesim.report"] = "json" if json_ else "quiet" if quiet else "text"
+        return fn(*args, **kwargs)
+
+    return wrapper
+
+
+def print_results(paths: list[Path]) -> None:
+    """The written paths, then a short summary of the key results read back from the files (or JSON)."""
+    ctx = click.get_current_context(silent=True)
+    mode = ctx.meta.get("spindlesim.report", "text") if ctx is not None else "text"
+    summaries = []
+    if mode != "quiet":
+        from ..output.summary import summarize
+
+        try:
+            summaries = summarize(paths)
+        except Exception as exc:  # a summary must never hide the results themselves
+            log.warning("results summary unavailable: %s", exc)
+    if mode == "json":
+        click.echo(json.dumps({"paths": [str(p) for p in paths], "summary": {n: d for n, _, d in summaries}},
+                              default=_json_default, allow_nan=True))
+        return
+    for p in paths:
+        click.echo(str(p))
+    for name, lines, _ in summaries:
+        click.echo(f"\n{name}:")
+        for line in lines:
+            click.echo(f"  {line}")
+
+
+def _json_default(v):
+    if isinstance(v, (np.floating, np.integer, np.bool_)):
+        return v.item()
+    if isinstance(v, np.ndarray):
+        return v.tolist()
+    return str(v)
+
+
 def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
     """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks."""
     from ..runs import run_analysis, run_info_for
+    from ..runs.status import EXIT_INTERRUPTED, IncompleteRun
     from ..deck import DeckError
 
     loaded = load_or_default(deck, default_name)
@@ -74,10 +147,21 @@ def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_na
     except DeckError as exc:
         close()
         report_deck_error(exc)
+    # --- run status (spindlesim/runs/status.py): incomplete runs and Ctrl-C have their own exit codes ---
+    except IncompleteRun as exc:  # the files are written, marked complete = False
+        close()
+        print_results(exc.paths)
+        click.echo(f"spindlesim {name}: {exc.reason}; the files are marked complete = False "
+                   f"(exit code {exc.exit_code})", err=True)
+        sys.exit(exc.exit_code)
+    except KeyboardInterrupt:  # before or after the part of the run that saves what it computed
+        close()
+        click.echo(f"spindlesim {name}: interrupted (exit code {EXIT_INTERRUPTED})", err=True)
+        sys.exit(EXIT_INTERRUPTED)
+    # --- end run status ---
     except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
         close()
         click.echo(f"spindlesim {name}: {exc}", err=True)
         sys.exit(1)
     close()
-    for p in paths:
-        click.echo(str(p))
+    print_results(paths)

@@ -2,12 +2,13 @@
 
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("contact")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--load", "load_N", type=click.FloatRange(min=0.0, min_open=True), default=None,
               help="Roller load [N] (default: deck).")
 @click.option("--tilt", "tilt_deg", type=float, default=None, help="Roller tilt [deg] (default: deck).")

@@ -1,13 +1,14 @@
-"""``spindlesim dtrb [DECK]``: quasi-static double-row tapered roller bearing (seed 001 section 2-1)."""
+"""``spindlesim dtrb [DECK]``: quasi-static double-row tapered roller bearing (slices, rib contact, 5 DOF)."""
 
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("dtrb")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--preload", "preload_um", type=click.FloatRange(min=0.0), default=None,
               help="Axial preload delta0 per row [um] (default: deck).")
 @click.option("--speed", "speed_rpm", type=click.FloatRange(min=0.0), default=None,

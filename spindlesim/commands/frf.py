@@ -1,11 +1,12 @@
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("frf")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Complex receptance between the deck's frf input and output (magnitude/phase, real/imaginary)."""

@@ -1,11 +1,12 @@
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("modal")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
 @click.option("--modes", type=click.IntRange(min=1), default=None, help="Number of modes (default: deck, 8).")
 def command(deck, outdir, speed_rpm, modes):

@@ -1,6 +1,8 @@
 """``spindlesim sweep DECK``: a parameter study over any deck value, on a process pool or Dask."""
 
+import contextlib
 import sys
+from collections import Counter
 
 import click
 
@@ -19,16 +21,25 @@ from .common import deck_argument, load_or_default, resolve_outdir
 @click.option("--workers", type=click.IntRange(min=1), default=None, help="Parallel workers [default: all cores].")
 @click.option("--scheduler", default=None, metavar="ADDRESS|local",
               help="Run on a Dask cluster: a scheduler address, or 'local' for a LocalCluster.")
-@click.option("--case-plots/--no-case-plots", default=False, help="Also write each case's PNGs [default: off].")
+@click.option("--case-plots/--no-case-plots", default=False,
+              help="Keep each case's PNGs in its folder [default: off: only HDF5 per case, the summary PNGs].")
 def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
-    """Run ANALYSIS for every case of a parameter study; resumable, one HDF5 per case plus sweep.h5."""
+    """Run ANALYSIS for every case of a parameter study; resumable, one HDF5 per case plus sweep.h5.
+
+    Rerunning the same command runs only the cases not done (failed, incomplete, interrupted or
+    never started).  Ctrl-C stops the running cases, starts no new one, writes sweep.h5 marked
+    incomplete and exits with 130.  Exit codes: 0 every case done, 1 a case failed or is
+    incomplete, 2 deck error, 130 interrupted."""
     from pathlib import Path
 
     from ..runs import analyses, run_info_for
     from ..deck import DeckError, parse_deck
     from ..sweep import build_cases, parse_set_option, run_sweep
     from ..sweep.cases import parse_values
+    from ..runs.status import EXIT_FAILED, EXIT_INTERRUPTED
+    from ..sweep.execution import sigint_ignored
     from ..sweep.report import plot_overlay, plot_scalars, write_summary
+    from ..sweep.runner import SweepInterrupted
     from .common import report_deck_error
 
     loaded = load_or_default(deck, "spindle")
@@ -68,16 +79,42 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
         click.echo(f"sweep: {done}/{total} cases, about {eta:.0f} s left", err=True)
 
     click.echo(f"sweep: {len(cases)} cases of {analysis} into {out}", err=True)
-    res = run_sweep(cases, out, workers=workers, scheduler=scheduler, progress=progress)
+    try:
+        res = run_sweep(cases, out, workers=workers, scheduler=scheduler, progress=progress)
+    except SweepInterrupted as exc:
+        res = exc.result
     run = run_info_for(loaded, " ".join(sys.argv))
-    paths = [write_summary(res, run, analysis), plot_scalars(res, out / "sweep_scalars.png"),
-             plot_overlay(res, analysis, out / f"sweep_{analysis}_overlay.png")]
+    title = f"{loaded.deck.title}\n{_operating_text(loaded.deck)}{len(cases)} cases of {analysis}"
+    try:
+        with sigint_ignored() if res.interrupted else contextlib.nullcontext():
+            paths = [write_summary(res, run, analysis), plot_scalars(res, out / "sweep_scalars.png", title=title),
+                     plot_overlay(res, analysis, out / f"sweep_{analysis}_overlay.png", title=title)]
+    except KeyboardInterrupt:  # every case is recorded; the summary is rewritten by the next run
+        click.echo(f"sweep: interrupted while writing the summary (exit code {EXIT_INTERRUPTED})", err=True)
+        sys.exit(EXIT_INTERRUPTED)
     for p in paths:
         if p is not None:
             click.echo(str(p))
-    failed = [r for r in res.records if r.get("status") != "done"]
-    click.echo(f"sweep: {len(res.ran)} run, {len(res.skipped)} already finished, {len(failed)} failed", err=True)
-    for r in failed:
-        click.echo(f"  case {r.get('index')} {r.get('parameters')}: {r.get('error', '').splitlines()[0]}", err=True)
-    if failed:
-        sys.exit(1)
+    not_done = [r for r in res.records if r.get("status") != "done"]
+    counts = ", ".join(f"{n} {s}" for s, n in Counter(r.get("status") for r in not_done).items())
+    click.echo(f"sweep: {len(res.ran)} run, {len(res.skipped)} already finished"
+               + (f", not done: {counts}" if counts else ", 0 failed"), err=True)
+    for r in not_done:
+        if r.get("status") in ("failed", "incomplete"):
+            click.echo(f"  case {r.get('index')} {r.get('parameters')}: {r.get('error', '').splitlines()[0]}", err=True)
+    if res.interrupted:
+        click.echo(f"sweep: interrupted; sweep.h5 is marked incomplete. Run the same command again to finish "
+                   f"(exit code {EXIT_INTERRUPTED})", err=True)
+        sys.exit(EXIT_INTERRUPTED)
+    if not_done:
+        sys.exit(EXIT_FAILED)
+
+
+def _operating_text(deck) -> str:
+    """The deck's operating point (speed, load, oil temperature) for the summary titles, or ""."""
+    from ..output.transient_plots import operating_point
+
+    rig = getattr(deck, "transient", None)
+    speed = deck.operating.speed_rpm if deck.operating is not None else getattr(rig, "speed_rpm", None)
+    text = ", ".join(p for p in (f"{speed:g} rpm" if speed is not None else "", operating_point(deck)) if p)
+    return f"base deck {text}; " if text else ""

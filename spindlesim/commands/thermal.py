@@ -2,13 +2,15 @@
 
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("thermal")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
 def command(deck, outdir, speed_rpm):
-    """Thermal equilibrium (seed 003 eqs. 4-14) of every three_lobe/plain bearing: thermal.h5."""
+    """Thermal equilibrium of every three_lobe/plain bearing (heat generated in the film = heat carried by the
+    oil + heat through the housing; the effective viscosity at the mean film temperature): thermal.h5."""
     run_and_report("thermal", deck, outdir, "spindle", {"speed_rpm": speed_rpm})

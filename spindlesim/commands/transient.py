@@ -2,12 +2,13 @@
 
 import click
 
-from .common import deck_argument, outdir_option, run_and_report
+from .common import deck_argument, outdir_option, run_and_report, report_options
 
 
 @click.command("transient")
 @deck_argument
 @outdir_option
+@report_options
 @click.option("--rollers", type=click.IntRange(min=3, max=100), default=None, help="Number of rollers (default: deck).")
 @click.option("--duration", "duration_s", type=click.FloatRange(min=0.0, min_open=True), default=None,
               help="Simulated time [s] (default: deck).")

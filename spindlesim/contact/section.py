@@ -14,7 +14,7 @@ given; ``ball`` replaces the roller by a point contact (for checking against Her
       raceway: inner              # inner | outer | flat
       raceway_radius_mm: 25.0
       tilt_deg: 0.0
-      grid: {nx: 64, ny: 256}
+      grid: {nx: 64, ny: 256}   # nx, ny 8..4096, nx x ny at most 131072
 """
 
 from __future__ import annotations
@@ -26,6 +26,8 @@ from pydantic import Field, model_validator
 from ..fields import DeckModel, NonNegFloat, PositiveFloat
 
 GridSize = Annotated[int, Field(ge=8, le=4096)]
+#: most cells of a grid, nx * ny: the influence sums (DC-FFT on 2nx x 2ny) take about 10 s at this size
+MAX_CELLS = 131_072
 
 
 class ContactMaterial(DeckModel):
@@ -37,12 +39,18 @@ class ContactGrid(DeckModel):
     nx: GridSize = 64   # cells across the contact (rolling direction)
     ny: GridSize = 256  # cells along the roller (or the ball's second axis)
 
+    @model_validator(mode="after")
+    def _cells(self) -> "ContactGrid":
+        if self.nx * self.ny > MAX_CELLS:
+            raise ValueError(f"nx x ny = {self.nx * self.ny} cells; the limit is {MAX_CELLS} (e.g. nx: 64, ny: 2048)")
+        return self
+
 
 class MostLoadedRoller(DeckModel):
     """Roller load from Stribeck: Q_max = 4.08 F_r / Z (zero clearance, line contact)."""
 
     radial_load_N: PositiveFloat
-    rollers: Annotated[int, Field(ge=1)]
+    rollers: Annotated[int, Field(ge=1, le=1000)]
 
 
 class BallContact(DeckModel):

@@ -10,20 +10,27 @@ each family's builder (bearings).
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import Annotated, Any, Literal, Optional, Union
+from types import UnionType
+from typing import Annotated, Any, Literal, Optional, Union, get_args, get_origin
 
 from pydantic import BaseModel, Field, create_model, model_validator
 
+from ..bearings.ball.section import BallSection
 from ..bearings.dtrb.section import DtrbSection
 from ..bearings.roller.section import TransientSection
+from ..chatter.section import ChatterSection
 from ..bearings.types import BEARING_TYPES
 from ..contact.section import ContactSection
-from ..fields import DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
+from ..fields import ANY_NUMBER, AnyNumber, DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
 
 FrequencyRange = Range  # {start, stop, count}
-ShaftRow = Annotated[list[float], Field(min_length=8, max_length=8)]
+#: [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]; the loader
+#: checks each column against its unit's range (deck/loader.py, _row_checks)
+ShaftRow = Annotated[list[AnyNumber], Field(min_length=8, max_length=8)]
 #: top-level sections contributed by bearing families and physics packages: name -> model
 SECTIONS: dict[str, type[BaseModel]] = {
+    "bearing": BallSection,  # `spindlesim bearing`: one bearing (set) under a load (type: ball)
+    "chatter": ChatterSection,  # `spindlesim chatter`: the cutting process and the FRF's source
     "contact": ContactSection,
     "dtrb": DtrbSection,
     "transient": TransientSection,
@@ -34,15 +41,46 @@ class InternalDamping(DeckModel):
     """Rotating (internal) damping of the shaft material, seed 003 eq. 17."""
 
     viscous_s: NonNegFloat = 0.0  # eta_v: K_B multiplier in C (s)
-    hysteretic: NonNegFloat = 0.0  # eta_h: loss factor
+    hysteretic: Annotated[float, Field(ge=0, le=2.0)] = 0.0  # eta_h: loss factor
 
 
 class Shaft(DeckModel):
     # one row per element: [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]
-    elements: Annotated[list[ShaftRow], Field(min_length=1, max_length=5000)]
-    shear_coefficient: Optional[PositiveFloat] = None  # overrides Cowper's hollow-circle formula
+    elements: Annotated[list[ShaftRow], Field(min_length=1, max_length=500)]  # deck.limits.MAX_ROTOR_ELEMENTS
+    shear_coefficient: Optional[Annotated[float, Field(gt=0, le=10.0)]] = None  # overrides Cowper's hollow-circle formula
     internal_damping: InternalDamping = InternalDamping()
     start_z_mm: float = 0.0
+
+
+class ElementRows(DeckModel):
+    # rows as the shaft's: [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]
+    elements: Annotated[list[ShaftRow], Field(min_length=1, max_length=200)]
+
+
+class ToolJoint(DeckModel):
+    """Springs and dampers between two nodes, translational (x, y) and rotational (theta_x, theta_y):
+    the tool in its holder (shrink fit, collet, Weldon), or the holder on the spindle (HSK, steep taper)."""
+
+    translational_N_m: PositiveFloat
+    rotational_Nm_rad: PositiveFloat
+    translational_Ns_m: NonNegFloat = 0.0
+    rotational_Nms_rad: NonNegFloat = 0.0
+
+
+class ToolSection(DeckModel):
+    """Holder and tool at the spindle nose: the tool tip becomes a node of the rotor.
+
+    The holder's elements continue the shaft from ``holder_node`` (node 1: the nose) outwards, rigidly
+    mounted, or through the ``interface`` joint (HSK, steep taper) when given; the ``joint`` holds the
+    tool's first node at the holder's end; the tool's elements go on outwards to the tip.  New nodes
+    are numbered after the shaft's: holder nodes (its first node too when there is an interface),
+    then tool nodes; the tip is the last node."""
+
+    holder_node: NodeNumber = 1
+    interface: Optional[ToolJoint] = None
+    holder: ElementRows
+    joint: ToolJoint
+    tool: ElementRows
 
 
 class Journal(DeckModel):
@@ -92,12 +130,17 @@ class ModalSection(DeckModel):
 class CampbellSection(DeckModel):
     speeds_rpm: FrequencyRange = FrequencyRange(start=0.0, stop=12000.0, count=50)
     modes: Annotated[int, Field(ge=1, le=1000)] = 8
+    # also the diagram with every bearing's coefficients frozen at this speed (e.g. 0: the stiffness at
+    # rest), drawn over the speed-dependent one: what the speed effects of the bearings change
+    compare_frozen_rpm: Optional[NonNegFloat] = None
 
 
 class FrfSection(DeckModel):
-    input: NodeDof = NodeDof(node=1, dof="x")
-    output: NodeDof = NodeDof(node=1, dof="x")
-    frequencies_hz: Union[FrequencyRange, Annotated[list[PositiveFloat], Field(min_length=1, max_length=1_000_000)]] \
+    """Receptance output/input; without them, x/x at the tool tip (deck section ``tool``) or node 1."""
+
+    input: Optional[NodeDof] = None
+    output: Optional[NodeDof] = None
+    frequencies_hz: Union[FrequencyRange, Annotated[list[PositiveFloat], Field(min_length=1, max_length=100_000)]] \
         = FrequencyRange(start=10.0, stop=5000.0, count=1000)
     speed_rpm: Optional[NonNegFloat] = None
 
@@ -111,8 +154,8 @@ class UnbalanceSection(DeckModel):
 
 
 class SweepRange(DeckModel):
-    start: float
-    stop: float
+    start: AnyNumber
+    stop: AnyNumber
     count: Annotated[int, Field(ge=1, le=100_000)]
 
 
@@ -122,8 +165,8 @@ class SweepSection(DeckModel):
     analysis: str
     mode: Literal["grid", "list"] = "grid"
     # deck path -> list of values, or {start, stop, count}
-    parameters: Annotated[dict[str, Union[SweepRange, Annotated[list[Any], Field(min_length=1)]]],
-                          Field(min_length=1)]
+    parameters: Annotated[dict[str, Union[SweepRange, Annotated[list[Any], Field(min_length=1, max_length=10_000)]]],
+                          Field(min_length=1, max_length=20)]
 
 
 class Perturbation(DeckModel):
@@ -137,8 +180,8 @@ class Perturbation(DeckModel):
 class SpeedRamp(DeckModel):
     """A linear speed ramp over the whole run (a run-up or run-down)."""
 
-    start: NonNegFloat
-    stop: NonNegFloat
+    start: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
+    stop: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
 
 
 class TimeLoad(DeckModel):
@@ -151,7 +194,7 @@ class TimeLoad(DeckModel):
     kind: Literal["harmonic", "step", "ramp"] = "harmonic"
     amplitude_N: float
     frequency_hz: Optional[PositiveFloat] = None
-    order: Optional[PositiveFloat] = None
+    order: Optional[Annotated[float, Field(gt=0, le=1000.0)]] = None
     phase_deg: float = 0.0
     time_s: NonNegFloat = 0.0
 
@@ -199,12 +242,13 @@ def deck_model() -> type[BaseModel]:
         __base__=DeckModel,
         title=(str, "untitled"),
         shaft=(Optional[Shaft], None),
+        tool=(Optional[ToolSection], None),
         journal=(Optional[Journal], None),
-        disks=(Annotated[list[Disk], Field(max_length=5000)], []),
-        bearings=(Annotated[list[bearing], Field(max_length=1000)], []),  # type: ignore[valid-type]
+        disks=(Annotated[list[Disk], Field(max_length=1000)], []),
+        bearings=(Annotated[list[bearing], Field(max_length=200)], []),  # type: ignore[valid-type]
         operating=(Optional[Operating], None),
-        loads=(Annotated[list[PointLoad], Field(max_length=5000)], []),
-        analyses=(Optional[list[str]], None),
+        loads=(Annotated[list[PointLoad], Field(max_length=1000)], []),
+        analyses=(Optional[Annotated[list[str], Field(max_length=50)]], None),
         static=(StaticSection, StaticSection()),
         modal=(ModalSection, ModalSection()),
         campbell=(CampbellSection, CampbellSection()),
@@ -214,3 +258,48 @@ def deck_model() -> type[BaseModel]:
         rotor_transient=(Optional[RotorTransientSection], None),
         **extra,
     )
+
+
+def _unwrap(ann: Any, value: Any) -> Any:
+    """The member of ``ann`` (Optional, Union, Annotated) that fits ``value`` best."""
+    while get_origin(ann) is Annotated:
+        ann = get_args(ann)[0]
+    if get_origin(ann) not in (Union, UnionType):
+        return ann
+    members = [_unwrap(a, value) for a in get_args(ann) if a is not type(None)]
+    models = [m for m in members if isinstance(m, type) and issubclass(m, BaseModel)]
+    if isinstance(value, dict) and models:
+        tag = value.get("type", value.get("kind"))
+        for m in models:
+            lit = m.model_fields.get("type") or m.model_fields.get("kind")
+            if lit is not None and tag in get_args(lit.annotation):
+                return m
+        return max(models, key=lambda m: len(set(m.model_fields) & set(value)))
+    if isinstance(value, list):
+        lists = [m for m in members if get_origin(m) is list]
+        if lists:
+            return lists[0]
+    return members[0] if members else ann
+
+
+def keys_at(data: Any, path: tuple[Any, ...]) -> list[str]:
+    """The keys the schema allows in the mapping at ``path`` of the deck ``data`` ([] if not a model)."""
+    ann: Any = deck_model()
+    cur = data
+    for item in (*path, None):
+        ann = _unwrap(ann, cur)
+        if item is None:
+            break
+        if isinstance(ann, type) and issubclass(ann, BaseModel) and item in ann.model_fields:
+            ann = ann.model_fields[item].annotation
+        elif get_origin(ann) is list and isinstance(item, int):
+            ann = get_args(ann)[0]
+        elif get_origin(ann) is dict:
+            ann = get_args(ann)[1]
+        else:
+            return []
+        cur = cur.get(item) if isinstance(cur, dict) else cur[item] if isinstance(cur, list) and \
+            isinstance(item, int) and 0 <= item < len(cur) else None
+    if isinstance(ann, type) and issubclass(ann, BaseModel):
+        return list(ann.model_fields)
+    return []

@@ -1,22 +1,43 @@
-"""Load a YAML deck: parse with line marks, validate with pydantic, check physics, collect all errors."""
+"""Load a YAML deck: parse with line marks, validate with pydantic, check physics, collect all errors.
+
+Errors (:class:`DeckError`) and plausibility warnings (``LoadedDeck.warnings``) are
+:class:`DeckIssue` objects located as ``file:line:col: key.path: message``.  The loader never
+prints; the commands print (``commands/common.py``).
+"""
 
 from __future__ import annotations
 
+import difflib
 import hashlib
-from dataclasses import dataclass
+import logging
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
+from ..fields import unit_range, unit_text
+from .document import bearing_types, deck_model, keys_at
 from .errors import DeckError, DeckIssue
-from .document import bearing_types, deck_model
-from .yamlmarks import load_with_marks, locate
+from .limits import MAX_ISSUES, MAX_TEXT_CHARS, work_checks
+from .plausibility import plausibility_warnings
+from .yamlmarks import load_with_marks, locate, path_str
+
+log = logging.getLogger(__name__)
 
 #: every analysis a deck may list under ``analyses:`` (``spindlesim.runs.RUNS`` runs them)
 ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient", "rotor_transient", "thermal",
-            "coefficients", "dtrb", "contact")
+            "coefficients", "bearing", "dtrb", "contact", "chatter")
+#: analyses of the rotor on its bearings: without a support the stiffness matrix is singular
+SUPPORTED_ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient")
+#: bearing types that act on x and y only (no tilt or axial stiffness)
+RADIAL_ONLY = ("linear", "three_lobe", "plain", "roller")
+#: columns of a shaft, holder or tool row
+ROW_KEYS = ("outer_dia_mm", "inner_dia_mm", "length_mm", "density_kg_m3", "E_GPa", "G_GPa", "poisson",
+            "axial_force_N")
+
+Marks = dict[tuple[Any, ...], tuple[int, int]]
 
 
 @dataclass(frozen=True)
@@ -26,6 +47,10 @@ class LoadedDeck:
     deck: BaseModel
     text: str
     source: str  # file path, or "<default:name>"
+    #: plausibility warnings (likely unit mistakes); ``--strict`` makes them errors
+    warnings: tuple[DeckIssue, ...] = ()
+    #: key path -> (line, col) of the deck text, to locate later checks
+    marks: Marks = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def sha256(self) -> str:
@@ -37,12 +62,10 @@ class LoadedDeck:
             return "default_" + self.source[len("<default:"):-1]
         return Path(self.source).stem
 
-
-def _path_str(path: tuple[Any, ...]) -> str:
-    out = ""
-    for p in path:
-        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
-    return out
+    def issue(self, path: tuple[Any, ...], message: str) -> DeckIssue:
+        """A DeckIssue at the deck line of ``path`` (its deepest written prefix)."""
+        line, col = locate(self.marks, path)
+        return DeckIssue(self.source, line, col, path_str(path), message)
 
 
 def _data_path(data: Any, loc: tuple[Any, ...]) -> tuple[Any, ...]:
@@ -69,39 +92,89 @@ def _data_path(data: Any, loc: tuple[Any, ...]) -> tuple[Any, ...]:
     return tuple(path)
 
 
-def _message(err: dict[str, Any]) -> str:
+def _did_you_mean(word: str, choices: list[str]) -> str:
+    close = difflib.get_close_matches(word, choices, n=1, cutoff=0.6)
+    if not close:
+        lowered = {c.lower(): c for c in choices}
+        close = difflib.get_close_matches(word.lower(), list(lowered), n=1, cutoff=0.6)
+        close = [lowered[c] for c in close]
+    return f"; did you mean '{close[0]}'?" if close else ""
+
+
+def _unknown_key(data: Any, path: tuple[Any, ...]) -> str:
+    keys = keys_at(data, path[:-1])
+    key = str(path[-1]) if path else ""
+    if not keys:
+        return "unknown key"
+    hint = _did_you_mean(key, keys)
+    if hint:
+        return "unknown key" + hint
+    shown = ", ".join(keys) if len(keys) <= 16 else ", ".join(keys[:16]) + ", ..."
+    return f"unknown key; the keys here are {shown}"
+
+
+def _message(err: dict[str, Any], data: Any, path: tuple[Any, ...]) -> str:
     kind = err["type"]
     if kind == "extra_forbidden":
-        return "unknown key"
+        return _unknown_key(data, path)
     if kind == "missing":
         return "required key is missing"
     if kind == "union_tag_invalid":
-        return f"unknown type; expected one of {', '.join(sorted(bearing_types()))}"
-    msg = err["msg"]
+        names = sorted(bearing_types())
+        hint = _did_you_mean(str((err.get("ctx") or {}).get("tag", "")), names)
+        return f"unknown type; expected one of {', '.join(names)}" + (f" ({hint[2:]})" if hint else "")
+    if kind == "union_tag_not_found":
+        return f"a bearing needs a type: one of {', '.join(sorted(bearing_types()))}"
+    msg = str(err["msg"])
+    if msg.startswith("Value error, "):
+        msg = msg[len("Value error, "):]
     if "input" in err and kind.endswith("_type"):
-        msg += f" (got {type(err['input']).__name__} {err['input']!r})"
+        shown = repr(err["input"])
+        shown = shown if len(shown) <= 60 else shown[:57] + "..."
+        msg += f" (got {type(err['input']).__name__} {shown})"
     return msg
 
 
-def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
-    """Checks pydantic cannot express: element rows, node ranges, analysis names."""
-    bad: list[tuple[tuple[Any, ...], str]] = []
-    names = ["outer_dia_mm", "inner_dia_mm", "length_mm", "density_kg_m3", "E_GPa", "G_GPa", "poisson"]
-    rows = d.shaft.elements if d.shaft is not None else []
+def _row_checks(rows: list[list[float]], where: tuple[Any, ...], bad: list) -> None:
+    """Element rows [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]."""
     for i, row in enumerate(rows):
-        do, di, length, rho, e, g, nu, _ = row
-        for j, val in enumerate(row[:7]):
-            if names[j] == "inner_dia_mm":
+        do, di = row[0], row[1]
+        for j, val in enumerate(row):
+            name, at = ROW_KEYS[j], where + (i, j)
+            if name == "inner_dia_mm":
                 if val < 0:
-                    bad.append((("shaft", "elements", i, j), f"{names[j]} must be >= 0, got {val}"))
-            elif names[j] == "poisson":
+                    bad.append((at, f"{name} must be >= 0, got {val}"))
+                    continue
+            elif name == "poisson":
                 if not (-1.0 < val < 0.5):
-                    bad.append((("shaft", "elements", i, j), f"poisson must be in (-1, 0.5), got {val}"))
-            elif not val > 0:
-                bad.append((("shaft", "elements", i, j), f"{names[j]} must be > 0, got {val}"))
+                    bad.append((at, f"poisson must be in (-1, 0.5), got {val}"))
+                continue
+            elif name != "axial_force_N" and not val > 0:
+                bad.append((at, f"{name} must be > 0, got {val}"))
+                continue
+            suffix, (lo, hi) = unit_range(name)  # type: ignore[misc]
+            if not lo <= val <= hi:
+                bad.append((at, f"{name} {val:g} is outside the physical range of a value in {unit_text(suffix)} "
+                                f"({lo:g} .. {hi:g})"))
         if di >= do and do > 0:
-            bad.append((("shaft", "elements", i, 1), f"inner_dia_mm {di} must be smaller than outer_dia_mm {do}"))
+            bad.append((where + (i, 1), f"inner_dia_mm {di} must be smaller than outer_dia_mm {do}"))
+
+
+def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
+    """Checks pydantic cannot express: element rows, node ranges, analysis names, work limits."""
+    bad: list[tuple[tuple[Any, ...], str]] = []
+    rows = d.shaft.elements if d.shaft is not None else []
+    _row_checks(rows, ("shaft", "elements"), bad)
+    if d.tool is not None:
+        _row_checks(d.tool.holder.elements, ("tool", "holder", "elements"), bad)
+        _row_checks(d.tool.tool.elements, ("tool", "tool", "elements"), bad)
     n_nodes = len(rows) + 1 if d.shaft is not None else 1
+    if d.tool is not None and d.shaft is not None:
+        if d.tool.holder_node not in (1, n_nodes):
+            bad.append((("tool", "holder_node"), f"the holder sits at an end of the shaft: node 1 or {n_nodes}"))
+        n_nodes += len(d.tool.holder.elements) + len(d.tool.tool.elements) + 1 + (d.tool.interface is not None)
+    elif d.tool is not None:
+        bad.append((("tool",), "a tool needs a shaft to sit on (shaft: elements: ...)"))
     has_rotor = d.shaft is not None or d.journal is not None
 
     def node_ok(path: tuple[Any, ...], node: int) -> None:
@@ -122,16 +195,18 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
         node_ok(("loads", i, "node"), load.node)
     for sec, keys in (("static", ("stiffness_at",)), ("frf", ("input", "output"))):
         for key in keys:
-            node_ok((sec, key, "node"), getattr(getattr(d, sec), key).node)
+            where = getattr(getattr(d, sec), key)
+            if where is not None:
+                node_ok((sec, key, "node"), where.node)
     if d.unbalance is not None:
         node_ok(("unbalance", "node"), d.unbalance.node)
         node_ok(("unbalance", "output", "node"), d.unbalance.output.node)
-    fr = d.frf.frequencies_hz
-    if not isinstance(fr, list) and fr.stop <= fr.start:
-        bad.append((("frf", "frequencies_hz", "stop"), "stop must be greater than start"))
-    sp = d.campbell.speeds_rpm
-    if sp.stop <= sp.start:
-        bad.append((("campbell", "speeds_rpm", "stop"), "stop must be greater than start"))
+    for sec, key in (("frf", "frequencies_hz"), ("campbell", "speeds_rpm")):
+        r = getattr(getattr(d, sec), key)
+        if not isinstance(r, list) and r.stop <= r.start:
+            bad.append(((sec, key, "stop"), "stop must be greater than start"))
+    if d.unbalance is not None and d.unbalance.speeds_rpm.stop <= d.unbalance.speeds_rpm.start:
+        bad.append((("unbalance", "speeds_rpm", "stop"), "stop must be greater than start"))
     if d.shaft is not None and d.journal is not None:
         bad.append((("journal",), "give either shaft (a flexible rotor) or journal (a rigid journal), not both"))
     rt = d.rotor_transient
@@ -145,56 +220,98 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     if d.analyses is not None:
         for i, name in enumerate(d.analyses):
             if name not in ANALYSES:
-                bad.append((("analyses", i), f"unknown analysis {name!r}; known: {', '.join(ANALYSES)}"))
-    return bad
+                hint = _did_you_mean(name, list(ANALYSES))
+                bad.append((("analyses", i), f"unknown analysis {name!r}{hint or '; known: ' + ', '.join(ANALYSES)}"))
+    return bad + work_checks(d)
 
 
 def require_rotor(loaded: LoadedDeck, analysis: str) -> None:
-    """Rotor analyses need a rotor (``shaft`` or ``journal``) and ``operating``; raise a located
-    DeckError otherwise."""
+    """Rotor analyses need a rotor (``shaft`` or ``journal``), ``operating`` and bearings that hold the
+    rotor; raise a located DeckError otherwise (a singular stiffness matrix is a deck error)."""
     d = loaded.deck
     missing = [] if d.shaft is not None or d.journal is not None else ["shaft"]
     missing += [] if d.operating is not None else ["operating"]
     if missing:
         raise DeckError([DeckIssue(loaded.source, 1, 1, k, f"required for the {analysis} analysis") for k in missing])
+    if analysis not in SUPPORTED_ANALYSES:
+        return
+    if not d.bearings:
+        raise DeckError([loaded.issue(("bearings",), f"the {analysis} analysis needs bearings that hold the rotor "
+                                                     "(a rotor without supports has a singular stiffness matrix)")])
+    issues = []
+    if d.shaft is not None and all(b.type in RADIAL_ONLY for b in d.bearings) and len({b.node for b in d.bearings}) == 1:
+        issues.append(loaded.issue(("bearings", 0, "node"),
+                                   f"the {analysis} analysis needs the shaft held at two nodes: these bearings act on "
+                                   f"x and y only and all sit at node {d.bearings[0].node}, so the shaft can tilt freely"))
+    axial = [b for b in d.bearings if b.type == "ball" or (b.type == "dtrb" and b.dofs == 5)]
+    if not axial:
+        for i, p in enumerate(d.loads):
+            if p.fz_N:
+                issues.append(loaded.issue(("loads", i, "fz_N"), "an axial load needs a bearing that holds the rotor "
+                                                                 "axially (type ball, or dtrb with dofs: 5)"))
+    if issues:
+        raise DeckError(issues)
 
 
 def available_analyses() -> tuple[str, ...]:
     return ANALYSES
 
 
+def _capped(issues: list[DeckIssue]) -> DeckError:
+    uniq = list(dict.fromkeys(issues))
+    return DeckError(uniq[:MAX_ISSUES], total=len(uniq))
+
+
 def parse_deck(text: str, filename: str = "<deck>") -> LoadedDeck:
-    """Validate deck ``text``; raise DeckError listing every problem found."""
+    """Validate deck ``text``; raise DeckError listing every problem found (at most MAX_ISSUES shown)."""
     data, marks, issues = load_with_marks(text, filename)
+    if data is None and not issues:
+        issues.append(DeckIssue(filename, 1, 1, "", "the deck is empty"))
     if data is not None and not isinstance(data, dict):
-        issues.append(DeckIssue(filename, 1, 1, "", "the deck must be a mapping of sections (title, shaft, ...)"))
+        kind = "a list" if isinstance(data, list) else f"a single value ({type(data).__name__})"
+        issues.append(DeckIssue(filename, *marks.get((), (1, 1)), "",
+                                f"the deck is {kind}; it must be a mapping of sections (title:, shaft:, bearings:, ...)"))
     if data is None or not isinstance(data, dict):
-        raise DeckError(issues)
+        raise _capped(issues)
+    yaml_paths = {i.path for i in issues}
     try:
         deck = deck_model().model_validate(data)
     except ValidationError as exc:
         for err in exc.errors():
             path = _data_path(data, tuple(err["loc"]))
+            if path_str(path) in yaml_paths:
+                continue  # already reported by the YAML reader (a bad tag, an unreadable value)
             line, col = locate(marks, path)
-            issues.append(DeckIssue(filename, line, col, _path_str(path), _message(err)))
-        # one message per location and text
-        uniq = list(dict.fromkeys(issues))
-        raise DeckError(uniq) from None
+            issues.append(DeckIssue(filename, line, col, path_str(path), _message(err, data, path)))
+        raise _capped(issues) from None
     for path, msg in _physics_checks(deck):
         line, col = locate(marks, path)
-        issues.append(DeckIssue(filename, line, col, _path_str(path), msg))
+        issues.append(DeckIssue(filename, line, col, path_str(path), msg))
     if issues:
-        raise DeckError(issues)
-    return LoadedDeck(deck=deck, text=text, source=filename)
+        raise _capped(issues)
+    loaded = LoadedDeck(deck=deck, text=text, source=filename, marks=marks)
+    warnings = tuple(replace(loaded.issue(path, msg), severity="warning") for path, msg in plausibility_warnings(deck))
+    for w in warnings:
+        log.debug("%s", w)
+    return LoadedDeck(deck=deck, text=text, source=filename, warnings=warnings, marks=marks)
 
 
 def load_deck(path: str | Path) -> LoadedDeck:
     """Read and validate the deck at ``path``."""
     p = Path(path)
     try:
+        size = p.stat().st_size
+        if size > 4 * MAX_TEXT_CHARS:  # UTF-8: at most 4 bytes a character
+            raise DeckError([DeckIssue(str(p), 1, 1, "", f"the deck is {size} bytes; the limit is {MAX_TEXT_CHARS} "
+                                                         "characters (see 'Limits' in docs/deck-format.md)")])
         text = p.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise DeckError([DeckIssue(str(p), 1, 1, "", f"cannot read deck: {exc}")]) from None
+    except UnicodeDecodeError as exc:
+        line = exc.object[:exc.start].count(b"\n") + 1
+        col = exc.start - (exc.object.rfind(b"\n", 0, exc.start) + 1) + 1
+        raise DeckError([DeckIssue(str(p), line, col, "", f"the deck is not UTF-8 text (byte 0x{exc.object[exc.start]:02x} "
+                                                          "cannot be decoded): is it a YAML file?")]) from None
+    except OSError as exc:
+        raise DeckError([DeckIssue(str(p), 1, 1, "", f"cannot read deck: {exc.strerror or exc}")]) from None
     return parse_deck(text, str(p))
 
 
@@ -202,3 +319,7 @@ def default_deck(name: str = "spindle") -> LoadedDeck:
     """An embedded default deck shipped in ``spindlesim/decks/<name>.yaml``."""
     text = resources.files("spindlesim.decks").joinpath(f"{name}.yaml").read_text(encoding="utf-8")
     return parse_deck(text, f"<default:{name}>")
+
+
+__all__ = ["ANALYSES", "LoadedDeck", "available_analyses", "default_deck", "load_deck",
+           "parse_deck", "require_rotor"]

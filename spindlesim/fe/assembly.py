@@ -30,7 +30,8 @@ class ShaftMatrices:
     K_B: np.ndarray
     K_A: np.ndarray
     K_C: np.ndarray
-    C_ground: np.ndarray
+    C_ground: np.ndarray  # damping to ground and in joints (a tool in its holder)
+    K_J: np.ndarray  # stiffness of joints
     gravity_unit: np.ndarray  # load vector per (m/s^2) of gravity along -y
     eta_v: float
     eta_h: float
@@ -39,7 +40,7 @@ class ShaftMatrices:
         """Shaft stiffness incl. axial load and the circulatory term of internal damping."""
         a_h = (1 + self.eta_h) / np.sqrt(1 + self.eta_h**2)
         b_h = self.eta_h / np.sqrt(1 + self.eta_h**2)
-        K = a_h * self.K_B + self.K_A
+        K = a_h * self.K_B + self.K_A + self.K_J
         circ = self.eta_v * speed_rad_s + b_h
         if circ:
             K = K + circ * self.K_C
@@ -53,9 +54,10 @@ class ShaftMatrices:
         return C
 
 
-def _scatter(dofs: DofMap, n_elem: int) -> tuple[np.ndarray, np.ndarray]:
+def _scatter(dofs: DofMap, node_a: np.ndarray, node_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Global (row, col) index arrays for every element's 8x8 lateral block."""
-    idx = np.array([[dofs.index(e + a, d) for a in (0, 1) for d in DOFS_4] for e in range(n_elem)], dtype=int)
+    idx = np.array([[dofs.index(int(nd), d) for nd in (a, b) for d in DOFS_4] for a, b in zip(node_a, node_b)],
+                   dtype=int)
     return idx[:, :, None], idx[:, None, :]
 
 
@@ -71,7 +73,7 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
             el.length_m, el.area_m2, el.second_moment_m4, el.density_kg_m3,
             el.youngs_modulus_Pa, el.shear_modulus_Pa, el.shear_coefficient, el.axial_force_N,
         )
-        rows, cols = _scatter(dofs, el.count)
+        rows, cols = _scatter(dofs, el.node_a, el.node_b)
         for out, e in ((M, em.mass), (G, em.gyroscopic), (KB, em.stiffness_bending), (KA, em.stiffness_axial),
                        (KC, em.circulatory)):
             np.add.at(out, (np.broadcast_to(rows, e.shape), np.broadcast_to(cols, e.shape)), e)
@@ -80,7 +82,7 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
         ea_l = el.youngs_modulus_Pa * el.area_m2 / el.length_m
         m6 = el.density_kg_m3 * el.area_m2 * el.length_m / 6
         for e in range(el.count):
-            ij = np.ix_(*(2 * [[dofs.index(e, "z"), dofs.index(e + 1, "z")]]))
+            ij = np.ix_(*(2 * [[dofs.index(int(el.node_a[e]), "z"), dofs.index(int(el.node_b[e]), "z")]]))
             KB[ij] += ea_l[e] * np.array([[1.0, -1.0], [-1.0, 1.0]])
             M[ij] += m6[e] * np.array([[2.0, 1.0], [1.0, 2.0]])
     for disk in rotor.disks:
@@ -102,7 +104,16 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
         for d in ("x", "y"):
             i = dofs.component(d)
             Cg[i, i] += rotor.ground_damping_Ns_m
-    return ShaftMatrices(M=M, G=G, K_B=KB, K_A=KA, K_C=KC, C_ground=Cg, gravity_unit=grav,
+    KJ = np.zeros((n, n))
+    for j in rotor.joints:  # springs and dampers between two nodes
+        trans = ("x", "y", "z") if dofs.has("z") else ("x", "y")  # axially as translationally stiff
+        for names, k, c in ((trans, j.translational_N_m, j.translational_Ns_m),
+                            (("theta_x", "theta_y"), j.rotational_Nm_rad, j.rotational_Nms_rad)):
+            for d in names:
+                ij = np.ix_(*(2 * [[dofs.index(j.node_a, d), dofs.index(j.node_b, d)]]))
+                KJ[ij] += k * np.array([[1.0, -1.0], [-1.0, 1.0]])
+                Cg[ij] += c * np.array([[1.0, -1.0], [-1.0, 1.0]])
+    return ShaftMatrices(M=M, G=G, K_B=KB, K_A=KA, K_C=KC, C_ground=Cg, K_J=KJ, gravity_unit=grav,
                          eta_v=el.viscous_damping_s, eta_h=el.hysteretic_loss_factor)
 
 

@@ -9,6 +9,8 @@ from pathlib import Path
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from .hdf5 import publish
+
 
 def new_figure(width_in: float = 8.0, height_in: float = 5.0) -> Figure:
     fig = Figure(figsize=(width_in, height_in), layout="constrained")
@@ -17,14 +19,14 @@ def new_figure(width_in: float = 8.0, height_in: float = 5.0) -> Figure:
 
 
 def save_figure(fig: Figure, path: str | Path, dpi: int = 110) -> Path:
-    """Save ``fig`` as PNG via a temporary file and rename."""
+    """Save ``fig`` as PNG via a temporary file and rename; the file gets the umask's mode (0644 under 022)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp.png", dir=path.parent)
     os.close(fd)
     try:
         fig.savefig(tmp, dpi=dpi, format="png")
-        os.replace(tmp, path)
+        publish(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+from matplotlib.ticker import MultipleLocator
 
 from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
 from .figures import new_figure, save_figure
@@ -33,54 +34,131 @@ def plot_static(r: StaticResult, path: Path) -> Path:
     return save_figure(fig, path)
 
 
-def plot_modes(r: ModalResult, path: Path, max_modes: int = 8) -> Path:
+def plot_modes(r: ModalResult, path: Path, max_modes: int = 8,
+               bearings: tuple[tuple[str, float], ...] = ()) -> Path:
+    return save_figure(modes_figure(r, max_modes, bearings), path)
+
+
+def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, float], ...] = ()):
+    """Mode shapes along the rotor (nodes in axial order, so a tool ahead of the nose reads left to
+    right); ``bearings`` = (name, z [m]) are marked on every panel; the legend sits above the panels."""
     n = min(max_modes, len(r.frequency_hz))
-    fig = new_figure(10, 2.0 * max(n, 1))
+    fig = new_figure(10, 1.9 * max(n, 1) + 0.6)
     axes = np.atleast_1d(fig.subplots(max(n, 1), 1, sharex=True))
-    z = r.node_z_m * 1e3
+    order = np.argsort(r.node_z_m, kind="stable")
+    z = r.node_z_m[order] * 1e3
     for k in range(n):
         ax = axes[k]
-        shape = r.mode_shape[k]
-        ax.plot(z, shape[:, 0].real, "o-", ms=3, label="x (real)")
-        ax.plot(z, shape[:, 1].real, "s-", ms=3, label="y (real)")
-        ax.plot(z, np.abs(shape[:, 0]), ":", color="0.5", label="|x|")
+        shape = r.mode_shape[k][order]
+        ax.plot(z, shape[:, 0].real, "o-", ms=3, color="tab:blue", label="x (real part)")
+        ax.plot(z, shape[:, 1].real, "s-", ms=3, color="tab:orange", label="y (real part)")
+        X, Y = shape[:, 0], shape[:, 1]  # orbit semi-major axis: forward + backward circle radii
+        ax.plot(z, 0.5 * (np.abs(X - 1j * Y) + np.abs(X + 1j * Y)), ":", color="0.45", label="orbit semi-major axis")
+        for name, zb in bearings:
+            ax.axvline(zb * 1e3, color="0.55", lw=0.8, ls="--", label="bearing" if name == bearings[0][0] else None)
         ax.set_ylabel("amplitude [-]")
-        ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, zeta {r.damping_ratio[k]:.4f}, "
-                     f"log dec {r.log_dec[k]:.3f}, {r.whirl[k]}", fontsize=9)
+        what = r.whirl[k] if r.whirl[k] != "axial" else "axial (lateral part shown)"
+        ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.4f}, "
+                     f"log dec {r.log_dec[k]:.3f}, {what}", fontsize=9)
         ax.grid(True, alpha=0.3)
-    axes[0].legend(fontsize=7, loc="upper right")
+    if bearings:
+        for name, zb in bearings:
+            axes[0].annotate(name, (zb * 1e3, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10),
+                             textcoords="offset points", fontsize=7, color="0.35")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside upper right", ncols=len(labels), fontsize=8, frameon=False)
     axes[-1].set_xlabel("axial position z [mm]")
-    fig.suptitle(f"Damped mode shapes at {r.speed_rpm:g} rpm")
-    return save_figure(fig, path)
+    fig.suptitle(f"Damped mode shapes at {r.speed_rpm:g} rpm", x=0.02, ha="left")
+    return fig
 
 
-def plot_campbell(r: CampbellResult, path: Path) -> Path:
-    fig = new_figure(9, 7)
+def plot_campbell(r: CampbellResult, path: Path, operating_rpm: float | None = None) -> Path:
+    return save_figure(campbell_figure(r, operating_rpm), path)
+
+
+def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
+    """Tracked modes (one colour per mode in both panels; marker = whirl), the 0.5x, 1x and 2x lines,
+    critical speeds marked where 1x crosses a forward mode, speeds with an unstable mode shaded."""
+    fig = new_figure(10, 7.5)
     ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
     s = r.speed_rpm
-    colors = {"forward": "tab:blue", "backward": "tab:red", "mixed": "tab:gray", "": "k"}
+    marker = {"forward": "^", "backward": "v", "mixed": "o", "axial": "s"}
+    top = 1.08 * np.nanmax(r.frequency_hz)
     for k in range(r.frequency_hz.shape[1]):
-        ax1.plot(s, r.frequency_hz[:, k], color="0.8", lw=0.8)
-        for w, c in colors.items():
+        c = f"C{k % 10}"
+        ax1.plot(s, r.frequency_hz[:, k], color=c, lw=1.0)
+        for w, m in marker.items():
             sel = r.whirl[:, k] == w
             if sel.any():
-                ax1.scatter(s[sel], r.frequency_hz[sel, k], s=6, color=c)
-        ax2.plot(s, r.log_dec[:, k], lw=1)
-    ax1.plot(s, s / 60.0, "k--", lw=1, label="1x")
-    for cs in r.critical_speeds_rpm:
-        ax1.axvline(cs, color="tab:green", ls=":", lw=1)
-    for w, c in list(colors.items())[:3]:
-        ax1.scatter([], [], color=c, s=10, label=w)
+                ax1.plot(s[sel], r.frequency_hz[sel, k], m, ms=3.5, color=c, mfc="none" if w == "backward" else c,
+                         ls="none")
+        ax2.plot(s, r.log_dec[:, k], color=c, lw=1.2, label=f"mode {k + 1}")
+    for mult, ls in ((0.5, ":"), (1.0, "--"), (2.0, "-.")):
+        ax1.plot(s, mult * s / 60.0, color="k", ls=ls, lw=0.9, label=f"{mult:g}x")
+    for w, m in marker.items():
+        if np.any(r.whirl == w):
+            ax1.plot([], [], m, color="0.3", mfc="none" if w == "backward" else "0.3", ls="none", label=w)
+    for cs, k in zip(r.critical_speeds_rpm, r.critical_modes):
+        ax1.plot([cs], [cs / 60.0], "*", ms=13, color="tab:green", mec="k", zorder=5)
+        ax1.annotate(f"{cs:.0f} rpm", (cs, cs / 60.0), xytext=(6, -12), textcoords="offset points", fontsize=8)
+    unstable = np.any(r.log_dec < 0, axis=1)
+    for a in (ax1, ax2):
+        for i0, i1 in _runs(unstable):
+            a.axvspan(s[i0], s[i1], color="tab:red", alpha=0.12, lw=0,
+                      label="unstable" if (a is ax1 and i0 == _runs(unstable)[0][0]) else None)
+    if operating_rpm:
+        for a in (ax1, ax2):
+            a.axvline(operating_rpm, color="0.3", lw=1.0, ls=(0, (1, 3)))
+        ax1.annotate("operating speed", (operating_rpm, 0.98), xycoords=("data", "axes fraction"), rotation=90,
+                     va="top", ha="right", fontsize=7, color="0.3")
     ax1.set_ylabel("damped natural frequency [Hz]")
-    ax1.set_ylim(0, np.nanmax(r.frequency_hz) * 1.05)
-    ax1.legend(fontsize=8)
-    ax1.set_title("Campbell diagram (critical speeds dotted green)")
+    ax1.set_ylim(0, top)
+    ax1.set_xlim(s[0], s[-1])
+    fig.legend(*ax1.get_legend_handles_labels(), loc="outside right upper", fontsize=7, frameon=False)
+    crit = ", ".join(f"{c:.0f}" for c in r.critical_speeds_rpm)
+    ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (*)" if len(r.critical_speeds_rpm)
+                                        else ": no critical speed in the range"), fontsize=11)
     ax1.grid(True, alpha=0.3)
     ax2.axhline(0, color="k", lw=0.8)
     ax2.set_ylabel("log decrement [-]")
     ax2.set_xlabel("speed [rpm]")
     ax2.set_yscale("symlog", linthresh=0.01)
+    fig.legend(*ax2.get_legend_handles_labels(), loc="outside right lower", fontsize=7, frameon=False)
     ax2.grid(True, alpha=0.3)
+    return fig
+
+
+def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
+    """(first, last) index of every run of True in ``mask``."""
+    out, start = [], None
+    for i, v in enumerate(mask):
+        if v and start is None:
+            start = i
+        if not v and start is not None:
+            out.append((start, i - 1))
+            start = None
+    if start is not None:
+        out.append((start, len(mask) - 1))
+    return out
+
+
+def plot_campbell_frozen(r: CampbellResult, frozen: CampbellResult, frozen_rpm: float, path: Path) -> Path:
+    """The speed-dependent diagram (solid) over the one with bearing coefficients frozen at one speed (dashed)."""
+    fig = new_figure(9, 6)
+    ax = fig.subplots()
+    s = r.speed_rpm
+    for k in range(r.frequency_hz.shape[1]):
+        ax.plot(s, r.frequency_hz[:, k], color="tab:blue", lw=1.2, label="bearings at every speed" if k == 0 else None)
+        ax.plot(s, frozen.frequency_hz[:, k], color="tab:orange", lw=1.0, ls="--",
+                label=f"bearings frozen at {frozen_rpm:g} rpm" if k == 0 else None)
+    ax.plot(s, s / 60.0, "k:", lw=1, label="1x")
+    top = np.nanmax(np.concatenate([r.frequency_hz.ravel(), frozen.frequency_hz.ravel()]))
+    ax.set_ylim(0, top * 1.05)
+    ax.set_xlabel("speed [rpm]")
+    ax.set_ylabel("damped natural frequency [Hz]")
+    ax.set_title("Campbell diagram: effect of the bearings' speed dependence")
+    ax.legend(fontsize=8)
+    ax.grid(True, alpha=0.3)
     return save_figure(fig, path)
 
 
@@ -93,10 +171,10 @@ def plot_frf(r: FrfResult, path_magphase: Path, path_reim: Path) -> tuple[Path, 
     a1.set_ylabel("|receptance| [um/N]")
     a1.set_title("Receptance " + label)
     a1.grid(True, which="both", alpha=0.3)
-    a2.plot(f, np.degrees(np.angle(h)))
-    a2.set_ylabel("phase [deg]")
+    a2.plot(f, np.degrees(np.unwrap(np.angle(h))))  # unwrapped: no false vertical jumps at +-180
+    a2.set_ylabel("phase (unwrapped) [deg]")
     a2.set_xlabel("frequency [Hz]")
-    a2.set_yticks([-180, -90, 0, 90, 180])
+    a2.yaxis.set_major_locator(MultipleLocator(90))
     a2.grid(True, alpha=0.3)
     p1 = save_figure(fig, path_magphase)
     fig = new_figure(8, 6)

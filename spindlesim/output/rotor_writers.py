@@ -1,4 +1,9 @@
-"""Map rotor-analysis results onto the HDF5 layout of docs/output-format.md."""
+"""Map rotor-analysis results onto the HDF5 layout of docs/output-format.md.
+
+Dimensions (netCDF coordinates, see output/hdf5.py): ``node`` (1-based node number), ``mode``
+(1-based), ``speed_rpm``, ``frequency_hz``; string coordinates ``dof`` (x, y[, theta_x, theta_y])
+and ``load`` (Fx, Fy) name the components of displacement-like and force-like axes.
+"""
 
 from __future__ import annotations
 
@@ -7,66 +12,122 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
-from .hdf5 import RunInfo, write_h5
+from .hdf5 import Data, RunInfo, labels, write_h5
+
+XY = ("x", "y")
+FXY = ("Fx", "Fy")
+NOT_TRACKED = "NaN where the mode is not tracked at that speed"
 
 
 def write_static(path: Path, run: RunInfo, r: StaticResult) -> Path:
+    g = "/static"
     return write_h5(path, run, {
-        "/static/node_z_m": (r.node_z_m, "m"),
-        "/static/displacement_m": (r.displacement_m, "m"),
-        "/static/slope_rad": (r.slope_rad, "rad"),
-        "/static/bearing_name": (np.array(r.bearing_names, dtype=object), "1"),
-        "/static/bearing_node": (r.bearing_nodes + 1, "1"),
-        "/static/bearing_force_N": (r.bearing_force_N, "N"),
-        "/static/applied_force_N": (r.applied_force_N, "N"),
-        "/static/static_stiffness_N_m": (r.static_stiffness_N_m, "N/m"),
-    }, {"/static": {"speed_rpm": r.speed_rpm, "stiffness_node": r.stiffness_node + 1,
-                    "stiffness_dof": r.stiffness_dof,
-                    "bearing_force_convention": "force exerted by the bearing on the shaft"}})
+        f"{g}/node_z_m": (r.node_z_m, "m", ("node",)),
+        f"{g}/displacement_m": (r.displacement_m, "m", ("node", "dof")),
+        f"{g}/slope_rad": (r.slope_rad, "rad", ("node", "rotation")),
+        f"{g}/bearing_name": (np.array(r.bearing_names, dtype=object), "1", ("bearing_name",)),
+        f"{g}/bearing_node": (r.bearing_nodes + 1, "1", ("bearing_name",)),
+        f"{g}/bearing_force_N": Data(r.bearing_force_N, "N", ("bearing_name", "load"),
+                                     "force exerted by the bearing on the shaft"),
+        f"{g}/applied_force_N": Data(r.applied_force_N, "N", ("load",), "sum of the applied loads incl. gravity"),
+        f"{g}/static_stiffness_N_m": Data(r.static_stiffness_N_m, "N/m", (),
+                                          "1 / compliance at (stiffness_node, stiffness_dof)"),
+        **labels(g, "dof", XY), **labels(g, "rotation", ("theta_x", "theta_y")), **labels(g, "load", FXY),
+    }, {g: {"speed_rpm": r.speed_rpm, "stiffness_node": r.stiffness_node + 1,
+            "stiffness_dof": r.stiffness_dof,
+            "bearing_force_convention": "force exerted by the bearing on the shaft"}})
 
 
 def write_modal(path: Path, run: RunInfo, r: ModalResult) -> Path:
+    g = "/modal"
+    m = ("mode",)
     return write_h5(path, run, {
-        "/modal/frequency_hz": (r.frequency_hz, "Hz"),
-        "/modal/undamped_frequency_hz": (r.undamped_frequency_hz, "Hz"),
-        "/modal/damping_ratio": (r.damping_ratio, "1"),
-        "/modal/log_dec": (r.log_dec, "1"),
-        "/modal/eigenvalue": (r.eigenvalues, "1/s"),
-        "/modal/whirl": (np.array(r.whirl, dtype=object), "1"),
-        "/modal/forward_fraction": (r.forward_fraction, "1"),
-        "/modal/mode_shape": (r.mode_shape, "m, m, rad, rad (normalised: largest translation 1)"),
-        "/modal/node_z_m": (r.node_z_m, "m"),
-        "/modal/overdamped_roots": (r.overdamped_roots, "1/s (complex; zeta >= 0.999)"),
-        "/modal/rigid_body_roots": (r.rigid_body_roots, "1/s"),
-    }, {"/modal": {"speed_rpm": r.speed_rpm, "mode_shape_dofs": "x, y, theta_x, theta_y"}})
+        f"{g}/frequency_hz": Data(r.frequency_hz, "Hz", m, "damped natural frequency w_d / 2 pi"),
+        f"{g}/undamped_frequency_hz": Data(r.undamped_frequency_hz, "Hz", m, "|lambda| / 2 pi"),
+        f"{g}/damping_ratio": (r.damping_ratio, "1", m),
+        f"{g}/log_dec": Data(r.log_dec, "1", m, "logarithmic decrement -2 pi Re(lambda) / Im(lambda)"),
+        f"{g}/eigenvalue": Data(r.eigenvalues, "1/s", m, "lambda = -zeta w_n + j w_d"),
+        f"{g}/whirl": (np.array(r.whirl, dtype=object), "1", m),
+        f"{g}/forward_fraction": Data(r.forward_fraction, "1", m, "share of nodes whirling forward"),
+        f"{g}/mode_shape": Data(r.mode_shape, "", ("mode", "node", "dof"),
+                                "complex mode shape normalised so that its largest translation is 1",
+                                component_units=["1", "1", "rad/m", "rad/m"]),
+        f"{g}/node_z_m": (r.node_z_m, "m", ("node",)),
+        f"{g}/overdamped_roots": Data(r.overdamped_roots, "1/s", ("overdamped_root",),
+                                      "complex roots with zeta >= 0.999, real roots included"),
+        f"{g}/rigid_body_roots": Data(r.rigid_body_roots, "1/s", ("rigid_body_root",),
+                                      "roots below the rigid-body threshold (1 mHz)"),
+        **labels(g, "dof", ("x", "y", "theta_x", "theta_y")),
+    }, {g: {"speed_rpm": r.speed_rpm, "mode_shape_dofs": "x, y, theta_x, theta_y"}})
 
 
-def write_campbell(path: Path, run: RunInfo, r: CampbellResult) -> Path:
-    return write_h5(path, run, {
-        "/campbell/speed_rpm": (r.speed_rpm, "rpm"),
-        "/campbell/frequency_hz": (r.frequency_hz, "Hz"),
-        "/campbell/log_dec": (r.log_dec, "1"),
-        "/campbell/damping_ratio": (r.damping_ratio, "1"),
-        "/campbell/whirl": (np.asarray(r.whirl, dtype=object), "1"),
-        "/campbell/critical_speed_rpm": (r.critical_speeds_rpm, "rpm"),
-        "/campbell/critical_mode": (r.critical_modes, "1"),
-    }, {"/campbell": {"tracking": "MAC between consecutive speeds"}})
+def _campbell_data(g: str, r: CampbellResult, full: bool) -> dict:
+    sm = ("speed_rpm", "mode")
+    data = {
+        f"{g}/speed_rpm": (r.speed_rpm, "rpm", ("speed_rpm",)),
+        f"{g}/frequency_hz": Data(r.frequency_hz, "Hz", sm, NOT_TRACKED, fill_nan=True),
+        f"{g}/log_dec": Data(r.log_dec, "1", sm, NOT_TRACKED, fill_nan=True),
+        f"{g}/whirl": Data(np.asarray(r.whirl, dtype=object), "1", sm),
+        f"{g}/critical_speed_rpm": Data(r.critical_speeds_rpm, "rpm", ("critical",),
+                                        "1x line crossing a forward mode"),
+    }
+    if full:
+        data[f"{g}/damping_ratio"] = Data(r.damping_ratio, "1", sm, NOT_TRACKED, fill_nan=True)
+        data[f"{g}/critical_mode"] = Data(r.critical_modes, "1", ("critical",),
+                                          "0-based column of frequency_hz (mode coordinate - 1)")
+    return data
 
 
-def write_frf(path: Path, run: RunInfo, r: FrfResult) -> Path:
-    return write_h5(path, run, {
-        "/frf/frequency_hz": (r.frequency_hz, "Hz"),
-        "/frf/receptance_m_N": (r.receptance_m_N, "m/N"),
-        "/frf/dynamic_stiffness_N_m": (r.dynamic_stiffness_N_m, "N/m"),
-    }, {"/frf": {"input_node": r.input_node, "input_dof": r.input_dof, "output_node": r.output_node,
-                 "output_dof": r.output_dof, "speed_rpm": r.speed_rpm}})
+def write_campbell(path: Path, run: RunInfo, r: CampbellResult, frozen: CampbellResult | None = None,
+                   frozen_rpm: float | None = None) -> Path:
+    data = _campbell_data("/campbell", r, True)
+    attrs = {"/campbell": {"tracking": "MAC between consecutive speeds",
+                           "bearings": "linearised at the static state of every speed",
+                           "model": r.model}}
+    if frozen is not None:
+        data.update(_campbell_data("/campbell/frozen", frozen, False))
+        attrs["/campbell/frozen"] = {"bearings": f"coefficients frozen at {frozen_rpm:g} rpm", "frozen_rpm": frozen_rpm}
+    return write_h5(path, run, data, attrs)
+
+
+def write_frf(path: Path, run: RunInfo, r: FrfResult, tool_point=None) -> Path:
+    """``tool_point``: the tool tip's sampled 2 x 2 receptance (chatter.ToolPointFrf), when the rotor has a tool."""
+    f = ("frequency_hz",)
+    data = {
+        "/frf/frequency_hz": (r.frequency_hz, "Hz", f),
+        "/frf/receptance_m_N": (r.receptance_m_N, "m/N", f),
+        "/frf/dynamic_stiffness_N_m": (r.dynamic_stiffness_N_m, "N/m", f),
+    }
+    attrs = {"/frf": {"input_node": r.input_node, "input_dof": r.input_dof, "output_node": r.output_node,
+                      "output_dof": r.output_dof, "speed_rpm": r.speed_rpm}}
+    if tool_point is not None:
+        data.update(tool_point_frf("/frf/tool_point", tool_point.frequency_hz, tool_point.H))
+        attrs["/frf/tool_point"] = {"layout": "[frequency, output (x, y), input (x, y)]"}
+    return write_h5(path, run, data, attrs)
+
+
+def tool_point_frf(g: str, frequency_hz: np.ndarray, H: np.ndarray) -> dict:
+    """A 2 x 2 receptance [frequency, output, input] and its inverse, with their coordinates."""
+    with np.errstate(all="ignore"):
+        Z = np.linalg.inv(H)
+    return {
+        f"{g}/frequency_hz": (np.asarray(frequency_hz, float), "Hz", ("frequency_hz",)),
+        f"{g}/receptance_m_N": Data(H, "m/N", ("frequency_hz", "dof", "load"),
+                                    "displacement along dof per unit force along load"),
+        f"{g}/dynamic_stiffness_N_m": Data(Z, "N/m", ("frequency_hz", "load", "dof"),
+                                           "inverse of the receptance matrix at each frequency"),
+        **labels(g, "dof", XY), **labels(g, "load", FXY),
+    }
 
 
 def write_unbalance(path: Path, run: RunInfo, r: UnbalanceResult) -> Path:
+    g = "/unbalance"
     return write_h5(path, run, {
-        "/unbalance/speed_rpm": (r.speed_rpm, "rpm"),
-        "/unbalance/response_m": (r.response_m, "m"),
-        "/unbalance/node_z_m": (r.node_z_m, "m"),
-    }, {"/unbalance": {"unbalance_kg_m": r.unbalance_kg_m, "unbalance_node": r.unbalance_node,
-                       "output_node": r.output_node, "output_dof": r.output_dof,
-                       "response_convention": "complex phasor: q(t) = Re(q e^{j W t})"}})
+        f"{g}/speed_rpm": (r.speed_rpm, "rpm", ("speed_rpm",)),
+        f"{g}/response_m": Data(r.response_m, "m", ("speed_rpm", "node", "dof"),
+                                "complex phasor: q(t) = Re(q e^{j W t})"),
+        f"{g}/node_z_m": (r.node_z_m, "m", ("node",)),
+        **labels(g, "dof", XY),
+    }, {g: {"unbalance_kg_m": r.unbalance_kg_m, "unbalance_node": r.unbalance_node,
+            "output_node": r.output_node, "output_dof": r.output_dof,
+            "response_convention": "complex phasor: q(t) = Re(q e^{j W t})"}})

@@ -1,184 +1,379 @@
-"""Figures of a rotor transient (matplotlib Figure API, no pyplot state).  No physics here."""
+"""Figures of a rotor transient (matplotlib Figure API, no pyplot state).  No physics here.
+
+Every title states the operating point (node, speed, applied load, oil temperature, method) and,
+for a run that stopped early, why.  Lengths are drawn in the unit that suits their size (um, nm),
+about their steady mean (stated), so that a 1e-5 um vibration on a 0.02 um offset is readable.
+"""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from ..analysis.transient.result import TransientResult
-from ..analysis.transient.spectrum import distinct_points
+from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum, distinct_points
 from .figures import new_figure
 
 UM = 1e6
+#: characteristic frequencies whose harmonics are marked on the spectrum: rolling-element passes
+PASS_SUFFIXES = ("roller_pass", "ball_pass_outer")
+_PASS_COLORS = ("tab:red", "tab:green", "tab:purple", "tab:brown")
+_LENGTH_UNITS = ((1e-3, "mm"), (1e-6, "um"), (1e-9, "nm"), (1e-12, "pm"))
 
 
-def _title(res: TransientResult, what: str) -> str:
+def operating_point(deck) -> str:
+    """Applied load and oil temperature of a deck, for the titles ("" when the deck gives neither)."""
+    parts = []
+    rig = getattr(deck, "transient", None)
+    if rig is not None and deck.shaft is None and getattr(deck, "journal", None) is None:
+        load = getattr(getattr(rig, "shaft", None), "radial_load_N", None)
+        if load:
+            parts.append(f"radial load {load:g} N")
+    else:
+        loads = list(getattr(deck, "loads", None) or [])
+        radial = math.hypot(sum(ld.fx_N for ld in loads), sum(ld.fy_N for ld in loads))
+        axial = sum(ld.fz_N for ld in loads)
+        if radial or axial:
+            parts.append("load " + ", ".join(f"{v:.4g} N {k}" for k, v in (("radial", radial), ("axial", axial)) if v))
+        op = getattr(deck, "operating", None)
+        if op is not None and getattr(op, "gravity", False):
+            parts.append("gravity")
+    temps = sorted({b.oil.inlet_C for b in getattr(deck, "bearings", ()) if getattr(b, "oil", None) is not None
+                    and getattr(b.oil, "inlet_C", None) is not None})
+    if temps:
+        parts.append("oil inlet " + "/".join(f"{t:g}" for t in temps) + " degC")
+    return ", ".join(parts)
+
+
+def _speed_text(res: TransientResult) -> str:
     sp = res.speed_rpm
-    speed = (f"{sp[0]:.0f} rpm" if sp.size and np.ptp(sp) < 1e-9 * max(abs(sp[0]), 1.0)
-             else f"{sp[0]:.0f}-{sp[-1]:.0f} rpm" if sp.size else "")
-    s = f"{what}, node {res.record_node + 1}, {speed}, {res.method}"
+    if not sp.size:
+        return ""
+    return f"{sp[0]:.0f} rpm" if np.ptp(sp) < 1e-9 * max(abs(sp[0]), 1.0) else f"{sp[0]:.0f}-{sp[-1]:.0f} rpm"
+
+
+def _title(res: TransientResult, what: str, operating: str = "") -> str:
+    point = ", ".join(p for p in (_speed_text(res), operating) if p)
+    s = f"{what}, node {res.record_node + 1}: {point} ({res.method})"
     return s if res.complete else s + f"\nINCOMPLETE: {res.reason}"
 
 
 def _no_data(ax, text: str) -> None:
-    ax.text(0.5, 0.5, text, ha="center", va="center", transform=ax.transAxes, color="0.4")
+    ax.text(0.5, 0.5, text, ha="center", va="center", transform=ax.transAxes, color="0.3", wrap=True)
     ax.set_xticks([])
     ax.set_yticks([])
 
 
-def _window(res: TransientResult, periods: int = 5) -> np.ndarray:
-    """The last few periods of the slowest characteristic frequency (at least 2 % of the run)."""
+def length_unit(span_m: float) -> tuple[float, str]:
+    """(metres per unit, unit) in which ``span_m`` reads between 1 and 1000."""
+    for scale, name in _LENGTH_UNITS:
+        if span_m >= scale:
+            return scale, name
+    return _LENGTH_UNITS[-1]
+
+
+def _steady(res: TransientResult) -> np.ndarray:
+    return res.time_s >= res.settle_s - 1e-12
+
+
+def _revolution_hz(res: TransientResult) -> float:
+    f = res.frequencies_hz.get("revolution", 0.0)
+    return f if f > 0 else min((v for v in res.frequencies_hz.values() if v > 0), default=0.0)
+
+
+def _window(res: TransientResult, revolutions: float = 4) -> np.ndarray:
+    """The last few revolutions (at least 2 % of the run, at least 20 samples)."""
     t = res.time_s
-    f = min((v for v in res.frequencies_hz.values() if v > 0), default=0.0)
-    span = periods / f if f > 0 else 0.1 * (t[-1] - t[0] if t.size else 0.0)
-    return t >= (t[-1] - max(span, 0.02 * (t[-1] - t[0]))) if t.size else t > 0
-
-
-def time_figure(res: TransientResult) -> Figure:
-    """Whole run (thin) and the last few revolutions (readable) of x and y at the record node."""
-    fig = new_figure(9, 6)
-    ax = fig.subplots(2, 1)
-    t, d = res.time_s, res.displacement_m * UM
     if not t.size:
-        _no_data(ax[0], "no samples")
+        return t > 0
+    f = _revolution_hz(res)
+    total = t[-1] - t[0]
+    span = max(revolutions / f if f > 0 else 0.1 * total, 0.02 * total, 20 / res.sample_rate_hz)
+    return t >= t[-1] - span
+
+
+def _envelope(t: np.ndarray, y: np.ndarray, period_s: float):
+    """(t, min, max) of y over a sliding window of one ``period_s``: the whole run as a band."""
+    if t.size < 8:
+        return t, y, y
+    k = 4 if period_s > 0 else 1  # windows of four quarter-period bins
+    width = period_s / k if period_s > 0 else (t[-1] - t[0]) / 400
+    bins = int(min(max((t[-1] - t[0]) / width, 1), t.size // 2, 20000))
+    edges = np.linspace(0, t.size, bins + 1).astype(int)[:-1]
+    lo, hi = np.minimum.reduceat(y, edges), np.maximum.reduceat(y, edges)
+    if bins >= k > 1:
+        n = bins - k + 1
+        lo = np.min([lo[j:j + n] for j in range(k)], axis=0)
+        hi = np.max([hi[j:j + n] for j in range(k)], axis=0)
+        edges = edges[k // 2:k // 2 + n]
+    return t[edges], lo, hi
+
+
+def time_figure(res: TransientResult, operating: str = "") -> Figure:
+    """x and y at the record node: envelope of the whole run (top), the last revolutions (bottom),
+    each about its steady mean in a unit that suits the vibration."""
+    fig = new_figure(10, 6.5)
+    axes = fig.subplots(2, 2)
+    t = res.time_s
+    if not t.size:
+        for ax in axes.ravel():
+            _no_data(ax, "no samples")
         return fig
-    for k, lab in enumerate(("x", "y")):
-        ax[0].plot(t, d[:, k], lw=0.4, label=lab)
-    ax[0].axvline(res.settle_s, color="0.5", ls="--", lw=0.8, label="steady part from")
-    ax[0].set_xlabel("time [s]")
-    ax[0].set_ylabel("displacement [um]")
-    ax[0].set_title("whole run", fontsize=9)
-    ax[0].legend(fontsize=7, loc="upper right")
+    ref = _steady(res) if _steady(res).sum() >= 2 else np.ones(t.size, bool)
     w = _window(res)
+    n_rev = (t[w][-1] - t[w][0]) * _revolution_hz(res)
     for k, lab in enumerate(("x", "y")):
-        ax[1].plot(t[w] * 1e3, d[w, k], lw=0.9, label=lab)
-    ax[1].set_xlabel("time [ms]")
-    ax[1].set_ylabel("displacement [um]")
-    ax[1].set_title("last periods", fontsize=9)
-    for a in ax:
-        a.grid(True, alpha=0.3)
-    fig.suptitle(_title(res, "Response"), fontsize=9)
+        d = res.displacement_m[:, k]
+        mean = float(np.mean(d[ref]))
+        scale, unit = length_unit(float(np.ptp(d)) or 1e-12)
+        top, bottom = axes[0, k], axes[1, k]
+        f_rev = _revolution_hz(res)
+        te, lo, hi = _envelope(t, (d - mean) / scale, 1.0 / f_rev if f_rev > 0 else 0.0)
+        top.fill_between(te, lo, hi, color="tab:blue" if k == 0 else "tab:orange", lw=0.3, alpha=0.7,
+                         label="min-max over one revolution" if f_rev > 0 else "min-max envelope")
+        top.axvline(res.settle_s, color="0.4", ls="--", lw=0.8, label=f"steady part from {res.settle_s:.3g} s")
+        if not res.complete:
+            top.axvline(t[-1], color="tab:red", lw=1.0, label=f"run stopped at {t[-1]:.4g} s")
+        top.set_title(f"{lab}, whole run (mean of the steady part {mean * UM:.4g} um)", fontsize=9)
+        top.set_xlabel("time [s]")
+        top.set_ylabel(f"{lab} - mean [{unit}]")
+        top.legend(fontsize=7, loc="upper right")
+        bottom.plot(t[w] * 1e3, (d[w] - mean) / scale, lw=1.0, color="tab:blue" if k == 0 else "tab:orange")
+        bottom.set_title(f"{lab}, last {n_rev:.0f} revolutions" if n_rev > 0 else f"{lab}, last samples", fontsize=9)
+        bottom.set_xlabel("time [ms]")
+        bottom.set_ylabel(f"{lab} - mean [{unit}]")
+        for ax in (top, bottom):
+            ax.grid(True, alpha=0.3)
+            ax.yaxis.set_major_locator(MaxNLocator(6))
+    fig.suptitle(_title(res, "Response", operating), fontsize=9)
     return fig
 
 
-def orbit_figure(res: TransientResult) -> Figure:
-    fig = new_figure(6, 6)
+def orbit_figure(res: TransientResult, operating: str = "") -> Figure:
+    """Orbit of the steady part about its centre, equal axes (what exists when the run stopped early)."""
+    fig = new_figure(6.5, 6.5)
     ax = fig.subplots()
-    steady = res.time_s >= res.settle_s
+    steady = _steady(res)
+    note = ""
     if steady.sum() < 2:
-        _no_data(ax, "not enough steady data")
-        return fig
-    d = res.displacement_m[steady] * UM
-    ax.plot(d[:, 0], d[:, 1], lw=0.5, color="0.4", label="orbit")
+        if res.time_s.size < 4:
+            _no_data(ax, "not enough steady data for an orbit")
+            ax.set_title(_title(res, "Orbit", operating), fontsize=9)
+            return fig
+        steady = np.arange(res.time_s.size) >= res.time_s.size // 2
+        note = (f"run stopped at {res.time_s[-1]:.4g} s, before the steady part ({res.settle_s:.3g} s): "
+                f"last half of the samples, start-up included")
+    d = res.displacement_m[steady]
+    centre = d.mean(axis=0)
+    scale, unit = length_unit(float(max(np.ptp(d[:, 0]), np.ptp(d[:, 1]))) or 1e-12)
+    rel = (d - centre) / scale
+    ax.plot(rel[:, 0], rel[:, 1], lw=0.5, color="0.35", label="orbit")
     p = res.poincare[0] if res.poincare else None
     if p is not None and p.time_s.size:
-        ax.plot(p.xy_m[:, 0] * UM, p.xy_m[:, 1] * UM, "o", ms=3, color="tab:red", label=f"once per {p.name}")
+        pp = (p.xy_m - centre) / scale
+        ax.plot(pp[:, 0], pp[:, 1], "o", ms=3, color="tab:red", label=f"once per {p.name}")
     ax.set_aspect("equal", adjustable="datalim")
-    ax.ticklabel_format(useOffset=False)
-    ax.set_xlabel("x [um]")
-    ax.set_ylabel("y [um]")
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(MaxNLocator(6))
+    ax.set_xlabel(f"x [{unit}] from the centre x = {centre[0] * UM:.4g} um")
+    ax.set_ylabel(f"y [{unit}] from the centre y = {centre[1] * UM:.4g} um")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    ax.set_title(_title(res, "Orbit, steady part"), fontsize=9)
+    ax.legend(fontsize=7, loc="upper right")
+    if note:
+        ax.text(0.02, 0.02, note, transform=ax.transAxes, fontsize=7, color="tab:red", va="bottom", wrap=True)
+    ax.set_title(_title(res, "Orbit, steady part" if not note else "Orbit", operating), fontsize=9)
     return fig
 
 
-def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None) -> Figure:
-    """x and y amplitude spectra of the steady part, with the excitation harmonics and the linear modes."""
-    fig = new_figure(9, 6)
+def _spectrum_of(res: TransientResult) -> tuple[Spectrum, str]:
+    """The run's spectrum of the steady part or, for a run that stopped before it, of what exists."""
+    if res.spectrum.frequency_hz.size:
+        return res.spectrum, ""
+    n = res.time_s.size
+    if n < 16:
+        return res.spectrum, ""
+    part = np.arange(n) >= n // 2
+    spec = amplitude_spectrum(res.displacement_m[part], res.sample_rate_hz)
+    t = res.time_s[part]
+    return spec, (f"run stopped at {res.time_s[-1]:.4g} s, before the steady part ({res.settle_s:.3g} s): spectrum of "
+                  f"{t[0]:.4g}-{t[-1]:.4g} s, start-up transient included")
+
+
+def pass_frequencies(res: TransientResult) -> dict[str, float]:
+    """The rolling-element pass frequencies of the run (bearing.roller_pass, bearing.ball_pass_outer)."""
+    return {k: v for k, v in res.frequencies_hz.items() if v > 0 and k.endswith(PASS_SUFFIXES)}
+
+
+def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, operating: str = "") -> Figure:
+    """x and y amplitude spectra with every pass-frequency harmonic in range marked (h x), the
+    revolution 1X and 2X, the linear modes and the dominant line."""
+    fig = new_figure(10, 6.5)
     ax = fig.subplots(2, 1, sharex=True)
-    f, A = res.spectrum.frequency_hz, res.spectrum.amplitude
+    spec, note = _spectrum_of(res)
+    f, A = spec.frequency_hz, spec.amplitude
     if not f.size:
-        _no_data(ax[0], "not enough steady data for a spectrum")
+        for a in ax:
+            _no_data(a, "not enough data for a spectrum (the run stopped after "
+                        f"{res.time_s[-1] if res.time_s.size else 0.0:.3g} s)")
+        fig.suptitle(_title(res, "Spectrum", operating), fontsize=9)
         return fig
-    marks = {k: v for k, v in res.frequencies_hz.items() if v > 0 and (k == "revolution" or k.endswith("roller_pass"))}
-    fmax = max([3.0 * v for v in marks.values()] + [1.5 * float(np.max(modal_hz[:2])) if modal_hz is not None and
-                                                     modal_hz.size else 0.0])
+    passes = pass_frequencies(res)
+    rev = res.frequencies_hz.get("revolution", 0.0)
+    modal = np.asarray(modal_hz, float) if modal_hz is not None else np.zeros(0)
+    fmax = max([3.0 * v for v in passes.values()] + [3.0 * rev] + ([1.5 * float(np.max(modal[:2]))] if modal.size else []))
     fmax = min(f[-1], fmax) if fmax > 0 else f[-1]
-    colors = ("k", "tab:red", "tab:green", "tab:purple")
+    scale, unit = length_unit(float(np.max(A)) or 1e-12)
     for k, lab in enumerate(("x", "y")):
-        ax[k].semilogy(f, np.maximum(A[:, k], 1e-30) * UM, lw=0.7, color="tab:blue")
-        for c, (name, fr) in zip(colors, marks.items()):
-            for h in range(1, int(fmax / fr) + 1 if fr > 0 else 1):
-                ax[k].axvline(h * fr, color=c, ls=":", lw=0.8, label=(f"{name} x1..{int(fmax / fr)}" if h == 1 and k == 0
-                                                                       else None))
-        if modal_hz is not None:
-            for j, fm in enumerate(modal_hz[modal_hz <= fmax]):
-                ax[k].axvline(fm, color="tab:orange", ls="--", lw=0.8, label="linear modes" if j == 0 and k == 0 else None)
-        ax[k].set_ylabel(f"{lab} amplitude [um]")
-        ax[k].grid(True, which="both", alpha=0.3)
-    ax[0].legend(fontsize=7, loc="upper right")
+        a = ax[k]
+        a.semilogy(f, np.maximum(A[:, k], 1e-30) / scale, lw=0.7, color="tab:blue")
+        sel = (f > 0) & (f <= fmax)
+        i = int(np.argmax(np.where(sel, A[:, k], -1.0)))
+        a.plot(f[i], A[i, k] / scale, "v", color="k", ms=6, gid=f"dominant:{lab}")
+        a.annotate(f"{f[i]:.1f} Hz, {A[i, k] / scale:.3g} {unit}", (f[i], A[i, k] / scale), xytext=(6, 4),
+                   textcoords="offset points", fontsize=7)
+        for c, (name, fr) in zip(_PASS_COLORS, passes.items()):
+            n = int(fmax / fr + 1e-9)
+            every = max(1, math.ceil(n / 24))
+            for h in range(1, n + 1):
+                a.axvline(h * fr, color=c, ls=":", lw=0.9, gid=f"harmonic:{name}:{h}",
+                          label=(f"{name} {fr:.4g} Hz, harmonics 1..{n}" if h == 1 else None))
+                if k == 0 and (h == 1 or h % every == 0):
+                    a.text(h * fr, 1.0, f"{h}x", color=c, fontsize=6, ha="center", va="bottom",
+                           transform=a.get_xaxis_transform())
+        for h in (1, 2):
+            if 0 < h * rev <= fmax:
+                a.axvline(h * rev, color="0.3", ls="-.", lw=0.8, gid=f"revolution:{h}",
+                          label=f"revolution 1X, 2X ({rev:.4g} Hz)" if h == 1 else None)
+        for j, fm in enumerate(modal[(modal > 0) & (modal <= fmax)]):
+            a.axvline(fm, color="tab:orange", ls="--", lw=0.8, label="linear modes" if j == 0 else None)
+        a.set_ylabel(f"{lab} amplitude [{unit}]")
+        a.grid(True, which="major", alpha=0.3)
+    ax[1].legend(fontsize=7, loc="upper right")
+    if note:
+        ax[0].text(0.01, 0.03, note, transform=ax[0].transAxes, fontsize=7, color="tab:red")
     ax[1].set_xlim(0, fmax)
-    ax[1].set_xlabel(f"frequency [Hz] (bin {res.spectrum.resolution_hz:.3g} Hz)")
-    fig.suptitle(_title(res, "Spectrum of the steady part"), fontsize=9)
+    ax[1].set_xlabel(f"frequency [Hz] (bin {spec.resolution_hz:.3g} Hz)")
+    what = "Spectrum of the steady part" if not note else "Spectrum of the part computed"
+    fig.suptitle(_title(res, what, operating), fontsize=9)
     return fig
 
 
-def poincare_figure(res: TransientResult) -> Figure:
-    """Every Poincare set: displacement vs velocity in x, with the period found."""
+def period_label(k: int, n: int) -> str:
+    """"period-k" only when the n points visit k places at least twice each."""
+    if 1 <= k <= 8 and n >= 2 * k:
+        return f"period-{k}"
+    if k == n:
+        return f"{n} distinct points" + (" (too few to tell a period)" if n < 16 else " (not periodic)")
+    return f"{k} distinct points of {n} (not periodic)"
+
+
+def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
+    """Every Poincare set: x against dx/dt about the steady mean; "period-k" when the points fall on
+    k places (a coincident set is drawn as one point, not as round-off noise)."""
     sets = [p for p in res.poincare if p.time_s.size]
-    fig = new_figure(4.5 * max(len(sets), 1), 4.5)
-    axes = np.atleast_1d(fig.subplots(1, max(len(sets), 1)))
+    ncol = min(max(len(sets), 1), 3)
+    nrow = max(1, math.ceil(len(sets) / ncol))
+    fig = new_figure(4.3 * ncol, 3.9 * nrow + 0.5)
+    axes = np.atleast_1d(fig.subplots(nrow, ncol)).ravel()
     if not sets:
-        _no_data(axes[0], "not enough steady data for a Poincare map")
+        stop = res.time_s[-1] if res.time_s.size else 0.0
+        _no_data(axes[0], "not enough steady data for a Poincare map:\n"
+                 f"the run stopped at {stop:.4g} s, the steady part starts at {res.settle_s:.3g} s")
+        fig.suptitle(_title(res, "Poincare maps", operating), fontsize=9)
         return fig
+    steady = _steady(res) if _steady(res).sum() >= 2 else np.ones(res.time_s.size, bool)
+    x_all, v_all = res.displacement_m[steady, 0], res.velocity_m_s[steady, 0]
+    x0, v0 = (float(x_all.mean()), float(v_all.mean())) if x_all.size else (0.0, 0.0)
+    xs, xu = length_unit(float(np.ptp(x_all)) if x_all.size else 1e-12)
+    vs, vu = length_unit(float(np.ptp(v_all)) if v_all.size else 1e-12)
+    tol = 1e-4 * max(float(np.ptp(x_all)) if x_all.size else 0.0, 1e-15)
     for ax, p in zip(axes, sets):
-        x, v = p.xy_m[:, 0] * UM, p.v_m_s[:, 0] * 1e3
-        scale = max(float(np.ptp(res.displacement_m[:, 0])) if res.displacement_m.size else 0.0, 1e-15)
-        k = distinct_points(p.xy_m, 1e-4 * scale)
-        label = f"period-{k}" if k <= 8 else f"{k} distinct points (not periodic)"
-        ax.plot(x, v, ".", ms=3)
-        if k == 1:
-            ax.plot(x[:1], v[:1], "o", ms=8, mfc="none", color="tab:red")
-        ax.ticklabel_format(useOffset=False)
-        ax.set_xlabel("x [um]")
-        ax.set_ylabel("dx/dt [mm/s]")
+        k = distinct_points(p.xy_m, tol)
+        x, v = (p.xy_m[:, 0] - x0) / xs, (p.v_m_s[:, 0] - v0) / vs
+        if k == 1 and len(x) >= 2:
+            spread = float(np.max(np.abs(p.xy_m - p.xy_m.mean(axis=0))))
+            ax.plot([x.mean()], [v.mean()], "o", ms=9, mfc="none", color="tab:red", gid="period-1")
+            ax.text(0.5, 0.9, f"period-1: all {len(x)} points coincide\n(within {spread * UM:.2g} um)",
+                    transform=ax.transAxes, ha="center", va="top", fontsize=8, color="tab:red")
+            hx = max(0.5 * float(np.ptp(x_all)) / xs, 1e-9)
+            hv = max(0.5 * float(np.ptp(v_all)) / vs, 1e-9)
+            ax.set_xlim(x.mean() - hx, x.mean() + hx)
+            ax.set_ylim(v.mean() - hv, v.mean() + hv)
+            label = "period-1"
+        else:
+            ax.plot(x, v, ".", ms=3)
+            label = period_label(k, len(x))
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(MaxNLocator(5))
+        ax.set_xlabel(f"x - mean [{xu}]")
+        ax.set_ylabel(f"dx/dt - mean [{vu}/s]")
         ax.set_title(f"once per {p.name} ({p.frequency_hz:.4g} Hz): {label}", fontsize=8)
         ax.grid(True, alpha=0.3)
-    fig.suptitle(_title(res, "Poincare maps"), fontsize=9)
+    for ax in axes[len(sets):]:
+        ax.remove()
+    fig.suptitle(_title(res, "Poincare maps", operating), fontsize=9)
     return fig
 
 
-def bearing_output_figure(res: TransientResult, b: int, name: str) -> Figure:
-    """A per-element bearing output over time (e.g. roller loads) as a map, with the last periods drawn."""
+def _pretty(name: str, units: str) -> str:
+    base = name[: -len(units) - 1] if units and name.endswith("_" + units) else name
+    return base.replace("_", " ")
+
+
+def bearing_output_figure(res: TransientResult, b: int, name: str, operating: str = "") -> Figure:
+    """A per-element bearing output (e.g. roller loads): a map over the last revolutions (top) and three
+    elements over the last two revolutions (bottom)."""
     values, units = res.bearing_outputs[b][name]
-    fig = new_figure(9, 6)
+    fig = new_figure(10, 6.5)
     ax = fig.subplots(2, 1)
     t = res.time_s
     if not t.size:
         _no_data(ax[0], "no samples")
         return fig
+    what = _pretty(name, units)
+    element = "roller" if "roller" in name else "ball" if "ball" in name else "element"
     V = values.reshape(len(t), -1)
-    im = ax[0].imshow(V.T, aspect="auto", origin="lower", cmap="viridis",
-                      extent=(t[0], t[-1], 0.5, V.shape[1] + 0.5), interpolation="nearest")
-    fig.colorbar(im, ax=ax[0], label=f"{name} [{units}]")
+    cage = min((v for k, v in res.frequencies_hz.items() if k.endswith(".cage") and v > 0), default=0.0)
+    span = 6 / cage if cage > 0 else t[-1] - t[0]
+    m = t >= t[-1] - span
+    im = ax[0].imshow(V[m].T, aspect="auto", origin="lower", cmap="viridis",
+                      extent=(t[m][0], t[m][-1], 0.5, V.shape[1] + 0.5), interpolation="nearest")
+    fig.colorbar(im, ax=ax[0], label=f"{what} [{units}]")
     ax[0].set_xlabel("time [s]")
-    ax[0].set_ylabel("element")
+    ax[0].set_ylabel(element)
+    ax[0].yaxis.set_major_locator(MaxNLocator(integer=True, nbins=8))
+    ax[0].set_title(f"every {element}" + (", last 6 cage revolutions" if cage > 0 and span < t[-1] - t[0] else ""),
+                    fontsize=9)
     w = _window(res, 2)
-    for j in range(min(V.shape[1], 4)):
-        ax[1].plot(t[w] * 1e3, V[w, j], lw=0.9, label=f"element {j + 1}")
+    for j in range(min(V.shape[1], 3)):
+        ax[1].plot(t[w] * 1e3, V[w, j], lw=1.0, label=f"{element} {j + 1}")
     ax[1].set_xlabel("time [ms]")
-    ax[1].set_ylabel(f"{name} [{units}]")
-    ax[1].legend(fontsize=7)
+    ax[1].set_ylabel(f"{what} [{units}]")
+    ax[1].set_title(f"{min(V.shape[1], 3)} {element}s, last 2 revolutions", fontsize=9)
+    ax[1].legend(fontsize=7, loc="upper right")
     ax[1].grid(True, alpha=0.3)
-    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {name}"), fontsize=9)
+    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating), fontsize=9)
     return fig
 
 
-def run_up_figure(res: TransientResult, peak_rpm: float | None = None) -> Figure:
+def run_up_figure(res: TransientResult, peak_rpm: float | None = None, operating: str = "") -> Figure:
     """Response amplitude against the speed of a run-up (envelope of |x|, |y|)."""
     fig = new_figure(9, 5)
     ax = fig.subplots()
     if not res.time_s.size:
         _no_data(ax, "no samples")
         return fig
-    ax.plot(res.speed_rpm, np.abs(res.displacement_m[:, 0]) * UM, lw=0.4, label="|x|")
-    ax.plot(res.speed_rpm, np.abs(res.displacement_m[:, 1]) * UM, lw=0.4, label="|y|")
+    scale, unit = length_unit(float(np.max(np.abs(res.displacement_m))) or 1e-12)
+    ax.plot(res.speed_rpm, np.abs(res.displacement_m[:, 0]) / scale, lw=0.4, label="|x|")
+    ax.plot(res.speed_rpm, np.abs(res.displacement_m[:, 1]) / scale, lw=0.4, label="|y|")
     if peak_rpm is not None:
         ax.axvline(peak_rpm, color="tab:red", ls="--", lw=0.8, label=f"peak at {peak_rpm:.0f} rpm")
     ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("displacement [um]")
+    ax.set_ylabel(f"displacement [{unit}]")
     ax.legend(fontsize=7)
     ax.grid(True, alpha=0.3)
-    ax.set_title(_title(res, "Run-up"), fontsize=9)
+    ax.set_title(_title(res, "Run-up", operating), fontsize=9)
     return fig

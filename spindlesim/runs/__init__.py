@@ -32,8 +32,10 @@ RUNS: dict[str, tuple[str, str]] = {
     "rotor_transient": ("transient", "run"),  # the name of seed 001 study decks (the same run)
     "thermal": ("fluidfilm", "run_thermal"),
     "coefficients": ("fluidfilm", "run_coefficients"),
+    "bearing": ("bearing", "run"),
     "dtrb": ("dtrb", "run_dtrb"),
     "contact": ("contact", "run_contact"),
+    "chatter": ("chatter", "run"),
 }
 assert set(RUNS) == set(ANALYSES), "the deck's analysis names and the runs table must agree"
 
@@ -54,6 +56,7 @@ def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dic
         raise KeyError(f"unknown analysis {name!r}; known: {', '.join(RUNS)}")
     module, function = RUNS[name]
     fn = getattr(importlib.import_module(f"{__name__}.{module}"), function)
+    importlib.import_module(f"{__name__}.status").remove_stale_temporaries(outdir)  # a killed run's *.tmp
     return fn(loaded, Path(outdir), run or run_info_for(loaded), options or {}, progress)
 
 
@@ -70,5 +73,6 @@ def default_analyses(loaded: LoadedDeck) -> list[str]:
             names.append("transient")
     if any(b.type in ("three_lobe", "plain") and b.load_N is not None for b in d.bearings):
         names[:0] = ["thermal", "coefficients"]
-    names += [n for n in ("dtrb", "contact", "transient") if getattr(d, n, None) is not None and n not in names]
+    names += [n for n in ("bearing", "dtrb", "contact", "transient", "chatter") if getattr(d, n, None) is not None
+              and n not in names]
     return names

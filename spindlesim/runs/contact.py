@@ -67,14 +67,14 @@ def _solve_roller(sec: Any, load: float, nx: int, ny: int, opts: dict) -> Contac
 
 def write_contact(path: Path, run: Any, res: ContactResult, extra_attrs: dict | None = None) -> Path:
     """Write contact.h5: /contact/x_m, /contact/y_m, /contact/pressure_Pa [x, y] and more."""
-    from ..output.hdf5 import write_h5
+    from ..output.hdf5 import Data, write_h5
 
     datasets = {
-        "/contact/x_m": (res.x_m, "m"),
-        "/contact/y_m": (res.y_m, "m"),
-        "/contact/pressure_Pa": (res.pressure_Pa, "Pa"),
-        "/contact/centreline_pressure_Pa": (res.centreline_pressure_Pa, "Pa"),
-        "/contact/half_width_m": (res.half_width_m, "m"),
+        "/contact/x_m": Data(res.x_m, "m", ("x_m",), "rolling direction"),
+        "/contact/y_m": Data(res.y_m, "m", ("y_m",), "along the roller"),
+        "/contact/pressure_Pa": (res.pressure_Pa, "Pa", ("x_m", "y_m")),
+        "/contact/centreline_pressure_Pa": Data(res.centreline_pressure_Pa, "Pa", ("y_m",), "pressure at x = 0"),
+        "/contact/half_width_m": Data(res.half_width_m, "m", ("y_m",), "contact half-width in x (0: no contact)"),
     }
     attrs = {
         "max_pressure_Pa": res.max_pressure_Pa,

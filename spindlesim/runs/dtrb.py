@@ -16,10 +16,12 @@ import numpy as np
 
 from ..bearings.dtrb.bearing import DtrbBearing
 from ..bearings.dtrb.results import DtrbState, DtrbSweep
+from ..output.hdf5 import DOF5_UNITS, LOAD5_UNITS, STIFFNESS5_UNITS, Data, five_dof, labels
 
 log = logging.getLogger(__name__)
 
 RPM = math.pi / 30.0
+K_NOTE = "K[load, dof] = -dF/dd (N/m, N/rad, N m/m, N m/rad: see component_units)"
 
 
 def _range(r) -> np.ndarray:
@@ -75,12 +77,15 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
         tick(n_rad)
     for name, sw in sweeps.items():
         base = f"/dtrb/{name}"
-        datasets[f"{base}/{sw.name}"] = (sw.values, "m" if sw.name.endswith("_m") else "N")
-        datasets[f"{base}/stiffness"] = (sw.stiffness, "SI (N/m, N/rad, N m/m, N m/rad)")
-        datasets[f"{base}/KXX_N_m"] = (sw.stiffness[:, 0, 0], "N/m")
-        datasets[f"{base}/KZZ_N_m"] = (sw.stiffness[:, 2, 2], "N/m")
-        datasets[f"{base}/loaded_rollers"] = (sw.loaded_rollers, "1")
-        datasets[f"{base}/max_roller_load_N"] = (sw.max_roller_load_N, "N")
+        sd, sdr = (sw.name,), (sw.name, "row")
+        datasets.update(five_dof(base))
+        datasets[f"{base}/{sw.name}"] = (sw.values, "m" if sw.name.endswith("_m") else "N", sd)
+        datasets[f"{base}/stiffness"] = Data(sw.stiffness, "", (sw.name, "load", "dof"), K_NOTE,
+                                             component_units=STIFFNESS5_UNITS)
+        datasets[f"{base}/KXX_N_m"] = (sw.stiffness[:, 0, 0], "N/m", sd)
+        datasets[f"{base}/KZZ_N_m"] = (sw.stiffness[:, 2, 2], "N/m", sd)
+        datasets[f"{base}/loaded_rollers"] = (sw.loaded_rollers, "1", sdr)
+        datasets[f"{base}/max_roller_load_N"] = (sw.max_roller_load_N, "N", sdr)
 
     polar = [("applied load", st)]
     for p in sec.polar_preloads_um:
@@ -115,19 +120,24 @@ def _load_text(load: np.ndarray) -> str:
 
 
 def _state_datasets(base: str, st: DtrbState, minimal: bool = False) -> dict:
+    rr = ("row", "roller")
     out = {
-        f"{base}/stiffness": (st.stiffness, "SI (N/m, N/rad, N m/m, N m/rad)"),
-        f"{base}/reaction": (st.reaction, "N, N, N, N m, N m"),
-        f"{base}/roller_load_N": (st.outer_load_N, "N"),
-        f"{base}/psi_rad": (st.psi_rad, "rad"),
-        f"{base}/displacement": (st.displacement, "m, m, m, rad, rad"),
+        f"{base}/stiffness": Data(st.stiffness, "", ("load", "dof"), K_NOTE, component_units=STIFFNESS5_UNITS),
+        f"{base}/reaction": Data(st.reaction, "", ("load",), "reaction on the shaft", component_units=LOAD5_UNITS),
+        f"{base}/roller_load_N": Data(st.outer_load_N, "N", rr, "cup load Q_o"),
+        f"{base}/psi_rad": Data(st.psi_rad, "rad", rr, "roller azimuth"),
+        f"{base}/displacement": Data(st.displacement, "", ("dof",), "inner-ring displacement",
+                                     component_units=DOF5_UNITS),
+        **five_dof(base),
     }
     if not minimal:
         out.update({
-            f"{base}/inner_load_N": (st.inner_load_N, "N"),
-            f"{base}/rib_load_N": (st.rib_load_N, "N"),
-            f"{base}/inner_slice_load_N_m": (st.inner_slice_N_m, "N/m"),
-            f"{base}/outer_slice_load_N_m": (st.outer_slice_N_m, "N/m"),
-            f"{base}/roller_displacement": (st.roller_u, "m, m, rad"),
+            f"{base}/inner_load_N": Data(st.inner_load_N, "N", rr, "cone raceway load Q_i"),
+            f"{base}/rib_load_N": Data(st.rib_load_N, "N", rr, "rib load Q_f"),
+            f"{base}/inner_slice_load_N_m": Data(st.inner_slice_N_m, "N/m", rr + ("slice",), "q_i per unit length"),
+            f"{base}/outer_slice_load_N_m": Data(st.outer_slice_N_m, "N/m", rr + ("slice",), "q_o per unit length"),
+            f"{base}/roller_displacement": Data(st.roller_u, "", rr + ("roller_dof",),
+                                                component_units=("m", "m", "rad")),
+            **labels(base, "roller_dof", ("u_x", "u_z", "phi_y")),
         })
     return out

@@ -26,6 +26,9 @@ import numpy as np
 log = logging.getLogger(__name__)
 
 FLUID_TYPES = ("three_lobe", "plain")
+XY, FXY = ("x", "y"), ("Fx", "Fy")
+LOAD_FRAME = ("along_load", "ahead_of_load")
+SOMMERFELD = "mu N D L / (psi^2 W), psi = 2 Cp / D"
 
 
 def _fluid_bearings(loaded: Any):
@@ -64,6 +67,12 @@ def _analyze_all(loaded, options, progress):
         log.info("%s: mean film %.2f degC, mu %.4g Pa s, S %.4g, e/Cb %.4f, attitude %.1f deg",
                  b.name, res.temperature_mean_C, f.viscosity_Pa_s, f.sommerfeld,
                  f.eccentricity_ratio, f.attitude_angle_deg)
+        from ..bearings.fluidfilm.viscosity import OIL_MAX_C
+
+        if res.temperature_mean_C > OIL_MAX_C:
+            log.warning("bearing %r: mean film temperature %.0f C at %.0f rpm is above %.0f C, beyond a mineral "
+                        "oil's usable range: more oil flow, a lighter grade or more cooling",
+                        b.name, res.temperature_mean_C, om * 30 / math.pi, OIL_MAX_C)
         out.append((b, res))
         if progress is not None:
             progress(i + 1, len(bearings))
@@ -75,7 +84,7 @@ def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None
     """Thermal equilibrium of every fluid-film bearing; thermal.h5 and pressure PNGs."""
     from ..bearings.fluidfilm.plots import pressure_figure
     from ..output.figures import save_figure
-    from ..output.hdf5 import write_h5
+    from ..output.hdf5 import Data, labels, write_h5
 
     results, om = _analyze_all(loaded, options or {}, progress)
     ds: dict[str, tuple[Any, str]] = {}
@@ -84,28 +93,29 @@ def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None
         f = r.film
         g = f"/thermal/{b.name}"
         ds.update({
-            f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC"),
-            f"{g}/temperature_out_C": (r.temperature_out_C, "degC"),
-            f"{g}/temperature_in_C": (r.temperature_in_C, "degC"),
-            f"{g}/ambient_C": (r.ambient_C, "degC"),
-            f"{g}/viscosity_Pa_s": (f.viscosity_Pa_s, "Pa s"),
-            f"{g}/sommerfeld": (f.sommerfeld, "1 (mu N D L / (psi^2 W), psi = 2 Cp / D)"),
-            f"{g}/sommerfeld_b": (f.sommerfeld_b, "1 (on Cb)"),
-            f"{g}/eccentricity_ratio": (f.eccentricity_ratio, "1 (e / Cb)"),
-            f"{g}/attitude_angle_deg": (f.attitude_angle_deg, "deg"),
-            f"{g}/min_film_m": (f.min_film_m, "m"),
-            f"{g}/friction_torque_Nm": (f.friction_torque_Nm, "N m"),
-            f"{g}/power_loss_W": (f.power_loss_W, "W"),
-            f"{g}/friction_coefficient": (f.friction_coefficient, "1"),
-            f"{g}/oil_flow_m3_s": (r.oil_flow_m3_s, "m^3/s"),
-            f"{g}/inlet_flow_m3_s": (f.inlet_flow_m3_s, "m^3/s"),
-            f"{g}/side_flow_m3_s": (f.side_flow_m3_s, "m^3/s"),
-            f"{g}/reynolds_number": (f.reynolds_number, "1 (rho omega R Cb / mu)"),
-            f"{g}/heat_generated_W": (r.heat_generated_W, "W"),
-            f"{g}/heat_to_oil_W": (r.heat_to_oil_W, "W"),
-            f"{g}/heat_to_housing_W": (r.heat_to_housing_W, "W"),
-            f"{g}/load_N": (f.load_N, "N"),
-            f"{g}/journal_position_m": (f.position_m, "m"),
+            f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC", ()),
+            f"{g}/temperature_out_C": (r.temperature_out_C, "degC", ()),
+            f"{g}/temperature_in_C": (r.temperature_in_C, "degC", ()),
+            f"{g}/ambient_C": (r.ambient_C, "degC", ()),
+            f"{g}/viscosity_Pa_s": (f.viscosity_Pa_s, "Pa s", ()),
+            f"{g}/sommerfeld": Data(f.sommerfeld, "1", (), SOMMERFELD),
+            f"{g}/sommerfeld_b": Data(f.sommerfeld_b, "1", (), "Sommerfeld number on Cb"),
+            f"{g}/eccentricity_ratio": Data(f.eccentricity_ratio, "1", (), "e / Cb"),
+            f"{g}/attitude_angle_deg": (f.attitude_angle_deg, "degree", ()),
+            f"{g}/min_film_m": (f.min_film_m, "m", ()),
+            f"{g}/friction_torque_Nm": (f.friction_torque_Nm, "N m", ()),
+            f"{g}/power_loss_W": (f.power_loss_W, "W", ()),
+            f"{g}/friction_coefficient": (f.friction_coefficient, "1", ()),
+            f"{g}/oil_flow_m3_s": (r.oil_flow_m3_s, "m^3/s", ()),
+            f"{g}/inlet_flow_m3_s": (f.inlet_flow_m3_s, "m^3/s", ()),
+            f"{g}/side_flow_m3_s": (f.side_flow_m3_s, "m^3/s", ()),
+            f"{g}/reynolds_number": Data(f.reynolds_number, "1", (), "rho omega R Cb / mu"),
+            f"{g}/heat_generated_W": (r.heat_generated_W, "W", ()),
+            f"{g}/heat_to_oil_W": (r.heat_to_oil_W, "W", ()),
+            f"{g}/heat_to_housing_W": (r.heat_to_housing_W, "W", ()),
+            f"{g}/load_N": Data(f.load_N, "N", ("load",), "load on the bearing (x horizontal, y vertical)"),
+            f"{g}/journal_position_m": Data(f.position_m, "m", ("dof",), "journal centre (x horizontal, y vertical)"),
+            **labels(g, "dof", XY), **labels(g, "load", FXY),
         })
         attrs[g] = {"type": "isoviscous" if r.isoviscous else "thermal equilibrium",
                     "node": b.node + 1, "housing_conductance_W_K": r.housing_conductance_W_K}
@@ -122,7 +132,7 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
     from ..bearings.fluidfilm.performance import characteristic_curves
     from ..bearings.fluidfilm.plots import characteristics_figure
     from ..output.figures import save_figure
-    from ..output.hdf5 import write_h5
+    from ..output.hdf5 import Data, labels, write_h5
 
     results, om = _analyze_all(loaded, options or {}, progress)
     ds: dict[str, tuple[Any, str]] = {}
@@ -131,18 +141,22 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
     for b, r in results:
         f = r.film
         g = f"/coefficients/{b.name}"
+        ld, lf = ("load", "dof"), ("load_frame_load", "load_frame_dof")
         ds.update({
-            f"{g}/K_N_m": (f.K_N_m, "N/m"),
-            f"{g}/C_Ns_m": (f.C_Ns_m, "N s/m"),
-            f"{g}/k": (f.k, "1 (K Cp / W, x-y frame)"),
-            f"{g}/c": (f.c, "1 (B Cp omega / W, x-y frame)"),
-            f"{g}/k_load": (f.k_load, "1 (K Cb / W, load frame)"),
-            f"{g}/c_load": (f.c_load, "1 (B Cb omega / W, load frame)"),
-            f"{g}/sommerfeld": (f.sommerfeld, "1 (mu N D L / (psi^2 W), psi = 2 Cp / D)"),
-            f"{g}/eccentricity_ratio": (f.eccentricity_ratio, "1 (e / Cb)"),
-            f"{g}/attitude_angle_deg": (f.attitude_angle_deg, "deg"),
-            f"{g}/viscosity_Pa_s": (f.viscosity_Pa_s, "Pa s"),
-            f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC"),
+            f"{g}/K_N_m": Data(f.K_N_m, "N/m", ld, "K[load, dof] = -dF/dq, x-y frame"),
+            f"{g}/C_Ns_m": Data(f.C_Ns_m, "N s/m", ld, "C[load, dof] = -dF/dv, x-y frame"),
+            f"{g}/k": Data(f.k, "1", ld, "K Cp / W, x-y frame"),
+            f"{g}/c": Data(f.c, "1", ld, "B Cp omega / W, x-y frame"),
+            f"{g}/k_load": Data(f.k_load, "1", lf, "K Cb / W, load frame"),
+            f"{g}/c_load": Data(f.c_load, "1", lf, "B Cb omega / W, load frame"),
+            f"{g}/sommerfeld": Data(f.sommerfeld, "1", (), SOMMERFELD),
+            f"{g}/eccentricity_ratio": Data(f.eccentricity_ratio, "1", (), "e / Cb"),
+            f"{g}/attitude_angle_deg": (f.attitude_angle_deg, "degree", ()),
+            f"{g}/viscosity_Pa_s": (f.viscosity_Pa_s, "Pa s", ()),
+            f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC", ()),
+            **labels(g, "dof", XY), **labels(g, "load", FXY),
+            **labels(g, "load_frame_dof", LOAD_FRAME, "along the load, 90 deg ahead in the direction of rotation"),
+            **labels(g, "load_frame_load", LOAD_FRAME, "along the load, 90 deg ahead in the direction of rotation"),
         })
         attrs[g] = {"node": b.node + 1}
     paths = [write_h5(Path(outdir) / "coefficients.h5", run, ds, attrs)]

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 
 import numpy as np
 
+from ..deck.document import NodeDof
 from ..deck.loader import require_rotor
 from ..model.build import build_rotor
 from .common import first, plots_wanted, value_range
@@ -42,13 +44,17 @@ def run_modal(loaded, outdir, run, opts, progress):
     res = solve_modal(rotor, n_modes=first(opts.get("modes"), d.modal.modes))
     paths = [write_modal(outdir / "modal.h5", run, res)]
     if plots_wanted(opts):
-        paths.append(plot_modes(res, outdir / "modal_shapes.png"))
+        at: dict[float, str] = {}  # one mark per bearing position, named by the first bearing there
+        for b in rotor.bearings:
+            at.setdefault(float(rotor.node_z_m[b.node]), b.name)
+        bearings = tuple((name, z) for z, name in at.items())
+        paths.append(plot_modes(res, outdir / "modal_shapes.png", bearings=bearings))
     return paths
 
 
 def run_campbell(loaded, outdir, run, opts, progress):
     from ..analysis.campbell import solve_campbell
-    from ..output.rotor_plots import plot_campbell
+    from ..output.rotor_plots import plot_campbell, plot_campbell_frozen
     from ..output.rotor_writers import write_campbell
 
     require_rotor(loaded, "campbell")
@@ -56,10 +62,23 @@ def run_campbell(loaded, outdir, run, opts, progress):
     speeds = opts.get("speeds_rpm")
     speeds = value_range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
     rotor = build_rotor(d)
-    res = solve_campbell(rotor, speeds, n_modes=first(opts.get("modes"), d.campbell.modes), progress=progress)
-    paths = [write_campbell(outdir / "campbell.h5", run, res)]
+    modes = first(opts.get("modes"), d.campbell.modes)
+    res = solve_campbell(rotor, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")))
+    frozen_rpm = d.campbell.compare_frozen_rpm
+    frozen = None
+    if frozen_rpm is not None:
+        frozen = solve_campbell(rotor, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm)
+    if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
+        run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
+    paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm)]
     if plots_wanted(opts):
-        paths.append(plot_campbell(res, outdir / "campbell.png"))
+        paths.append(plot_campbell(res, outdir / "campbell.png", operating_rpm=d.operating.speed_rpm or None))
+        if frozen is not None:
+            paths.append(plot_campbell_frozen(res, frozen, frozen_rpm, outdir / "campbell_frozen.png"))
+    if res.incomplete_reason:
+        from .status import IncompleteRun
+
+        raise IncompleteRun(res.incomplete_reason, paths)
     return paths
 
 
@@ -72,11 +91,24 @@ def run_frf(loaded, outdir, run, opts, progress):
     d = loaded.deck
     fr = d.frf
     rotor = build_rotor(d, speed_rpm=first(opts.get("speed_rpm"), fr.speed_rpm))
-    res = solve_frf(rotor, value_range(fr.frequencies_hz), fr.input.node, fr.input.dof, fr.output.node,
-                    fr.output.dof)
-    paths = [write_frf(outdir / "frf.h5", run, res)]
+    tip = rotor.tool_tip + 1 if rotor.tool_tip is not None else 1
+    inp, out = fr.input or NodeDof(node=tip, dof="x"), fr.output or NodeDof(node=tip, dof="x")
+    f = value_range(fr.frequencies_hz)
+    res = solve_frf(rotor, f, inp.node, inp.dof, out.node, out.dof)
+    tool = None
+    if rotor.tool_tip is not None:  # the tool point's 2 x 2 receptance (xx, xy; yx, yy)
+        from ..analysis.tool_point import tool_point_model
+
+        tool = tool_point_model(rotor).frf(f)
+    paths = [write_frf(outdir / "frf.h5", run, res, tool)]
     if plots_wanted(opts):
         paths += list(plot_frf(res, outdir / "frf_magnitude_phase.png", outdir / "frf_real_imag.png"))
+        if tool is not None:
+            from ..chatter.plots import frf_figure
+            from ..output.figures import save_figure
+
+            paths.append(save_figure(frf_figure(tool, terms=("xx", "yy", "xy"), title=f"Tool point (node {tip}) at "
+                                                f"{rotor.speed_rpm:g} rpm"), outdir / "frf_tool_point.png"))
     return paths
 
 

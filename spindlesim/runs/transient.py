@@ -5,7 +5,8 @@ A rotor deck (``shaft:`` or ``journal:``, settings in ``rotor_transient:``), or 
 engine (``analysis.transient.engine``).  Options: rollers, model (override every ``type: roller``
 bearing, or the rig's), duration_s, plots.  Writes transient.h5 and PNGs; the linear modes at the
 static state go into the file and onto the spectrum.  A DTRB's most loaded roller gets the
-half-space contact pressure at the static state (seed 001 Fig. 13).
+half-space contact pressure at the static state (seed 001 Fig. 13).  A run that stops early still
+writes its files (complete = False) and then raises ``status.IncompleteRun`` (interrupted or not).
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ import numpy as np
 
 from ..deck.loader import require_rotor
 from .common import first, plots_wanted
+from .status import IncompleteRun, is_interrupt
 
 log = logging.getLogger(__name__)
 RPM = math.pi / 30.0
@@ -90,8 +92,8 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     from ..analysis.modal import solve_modal
     from ..analysis.transient.engine import simulate
     from ..output.figures import save_figure
-    from ..output.transient_plots import (bearing_output_figure, orbit_figure, poincare_figure, run_up_figure,
-                                          spectrum_figure, time_figure)
+    from ..output.transient_plots import (bearing_output_figure, operating_point, orbit_figure, poincare_figure,
+                                          run_up_figure, spectrum_figure, time_figure)
     from ..output.transient_writer import write_transient
 
     d = loaded.deck
@@ -114,20 +116,24 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
         modal_hz = None
     paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz)]
     if plots_wanted(opts):
-        figs = {"transient_time.png": time_figure(res), "transient_orbit.png": orbit_figure(res),
-                "transient_spectrum.png": spectrum_figure(res, modal_hz),
-                "transient_poincare.png": poincare_figure(res)}
+        op = operating_point(d)
+        figs = {"transient_time.png": time_figure(res, op), "transient_orbit.png": orbit_figure(res, op),
+                "transient_spectrum.png": spectrum_figure(res, modal_hz, op),
+                "transient_poincare.png": poincare_figure(res, op)}
         if settings.speed_rpm is not None:
-            figs["transient_run_up.png"] = run_up_figure(res)
+            figs["transient_run_up.png"] = run_up_figure(res, operating=op)
         for b, outs in enumerate(res.bearing_outputs):
             for name, (value, _) in outs.items():
                 if name != "force" and np.ndim(value) == 2:
-                    figs[f"transient_{res.bearing_names[b]}_{name}.png"] = bearing_output_figure(res, b, name)
+                    figs[f"transient_{res.bearing_names[b]}_{name}.png"] = bearing_output_figure(res, b, name, op)
         paths += [save_figure(fig, outdir / name) for name, fig in figs.items()]
-    paths += _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
-    if not res.complete:
-        log.warning("transient run incomplete (%s); wrote what was computed", res.reason)
-    return paths
+    if res.complete:
+        return paths + _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
+    interrupted = is_interrupt(res)
+    if not interrupted:  # the static roller pressure does not depend on the time history
+        paths += _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
+    log.info("transient run incomplete (%s); wrote what was computed", res.reason)
+    raise IncompleteRun(f"transient run incomplete: {res.reason}", paths, interrupted=interrupted)
 
 
 def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:

@@ -48,7 +48,7 @@ def test_default_decks_are_seed003_table1(name, btype):
     ("title: ok", "title: ok\ntitle: again", "deck.yaml:2:1: title: duplicate key (first defined on line 1)"),
     ("speed_rpm: 2170", "speed_rpm: [2170", "deck.yaml:11:1: invalid YAML"),
     ("type: linear, K_N_m: [[412", "type: linearr, K_N_m: [[412",
-     "deck.yaml:8:5: bearings[1]: unknown type; expected one of dtrb, linear, plain, roller, three_lobe"),
+     "deck.yaml:8:5: bearings[1]: unknown type; expected one of ball, dtrb, linear, plain, roller, three_lobe"),
     ("  elements:\n", "  elemnts:\n", "deck.yaml:2:1: shaft.elements: required key is missing"),
     ("0.3, 0.0]\n    - [57.6", "0.3]\n    - [57.6", "deck.yaml:4:7: shaft.elements[0]: List should have at least 8 items"),
 ])

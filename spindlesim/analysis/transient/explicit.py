@@ -43,7 +43,7 @@ def pack(system: RotorSystem) -> tuple[np.ndarray, np.ndarray, tuple]:
         sizes[kind] += a.size
         return off
 
-    for A, (h_nnz, i_rc, f_v) in ((a_h * sh.K_B + sh.K_A + b_h * sh.K_C, (k.H_K0_NNZ, k.I_K0, k.F_K0)),
+    for A, (h_nnz, i_rc, f_v) in ((a_h * sh.K_B + sh.K_A + sh.K_J + b_h * sh.K_C, (k.H_K0_NNZ, k.I_K0, k.F_K0)),
                                    (sh.eta_v * sh.K_C, (k.H_KC_NNZ, k.I_KC, k.F_KC)),
                                    (sh.C_ground + sh.eta_v * sh.K_B, (k.H_C0_NNZ, k.I_C0, k.F_C0)),
                                    (sh.G, (k.H_G_NNZ, k.I_G, k.F_G)),

@@ -18,6 +18,7 @@ reaction to the mass's centripetal and tangential acceleration).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -139,6 +140,38 @@ class RotorSystem:
                 arg = ld.order * phi if ld.order > 0 else ld.omega_rad_s * t
                 F[ld.index] += ld.amplitude_N * math.sin(arg + ld.phase_rad)
         return F
+
+    @functools.cached_property
+    def speed_affine(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(K0, K1, C0, C1) with stiffness(W) = K0 + W K1 and damping(W) = C0 + W C1 (the shaft's
+        matrices are affine in the speed: internal damping's circulatory term, gyroscopics)."""
+        K0, C0 = self.stiffness(0.0), self.damping(0.0)
+        return K0, self.stiffness(1.0) - K0, C0, self.damping(1.0) - C0
+
+    @functools.cached_property
+    def _blocks(self) -> tuple:
+        return tuple(np.ix_(gi, gi) for gi in self.index)
+
+    def forces(self, x: np.ndarray, v: np.ndarray, t: float) -> np.ndarray:
+        """f (N) of every bearing at (x, v, t), without tangents (the contract's ``force``)."""
+        W, phi = self.profile.speed(t), self.profile.angle(t)
+        f = np.zeros(self.size)
+        for b, gi in zip(self.bearings, self.index):
+            f[gi] += b.force(x[gi], v[gi], t, W, phi)
+        return f
+
+    def forces_and_tangents(self, x: np.ndarray, v: np.ndarray, t: float, K: np.ndarray, C: np.ndarray
+                            ) -> np.ndarray:
+        """f (N) of every bearing at (x, v, t); their tangents are added into K and C (N, N), block by
+        block (no dense per-bearing matrices)."""
+        W, phi = self.profile.speed(t), self.profile.angle(t)
+        f = np.zeros(self.size)
+        for b, gi, blk in zip(self.bearings, self.index, self._blocks):
+            fb, kb, cb = b.force_and_tangent(x[gi], v[gi], t, W, phi)
+            f[gi] += fb
+            K[blk] += kb
+            C[blk] += cb
+        return f
 
     def bearing_forces(self, x: np.ndarray, v: np.ndarray, t: float, with_tangent: bool = True):
         """(f (N), K_t (N, N), C_t (N, N), per-bearing forces) of every bearing at (x, v, t)."""

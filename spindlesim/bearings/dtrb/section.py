@@ -39,9 +39,10 @@ from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
-from ...fields import DeckModel, NodeNumber, PositiveFloat
+from ...fields import AnyNumber, DeckModel, NodeNumber, PositiveFloat
 
 Count = Annotated[int, Field(ge=2, le=2000)]
+MAX_POLAR = 16
 
 
 class DtrbMaterial(DeckModel):
@@ -86,8 +87,8 @@ class Load5(DeckModel):
 
 
 class SweepRange(DeckModel):
-    start: float
-    stop: float
+    start: AnyNumber  # the unit of the sweep's key applies too (preload_sweep_um, radial_sweep_N)
+    stop: AnyNumber
     count: Count
 
     @model_validator(mode="after")
@@ -104,8 +105,9 @@ class DtrbSection(DeckModel):
     load: Load5 = Load5()
     preload_sweep_um: Optional[SweepRange] = None
     radial_sweep_N: Optional[SweepRange] = None
-    polar_preloads_um: list[Annotated[float, Field(ge=0.0)]] = []
-    polar_radial_loads_N: list[float] = []
+    # one load distribution each (at most MAX_POLAR: every polar plot is a full equilibrium)
+    polar_preloads_um: Annotated[list[Annotated[float, Field(ge=0.0)]], Field(max_length=MAX_POLAR)] = []
+    polar_radial_loads_N: Annotated[list[float], Field(max_length=MAX_POLAR)] = []
 
     @model_validator(mode="after")
     def _ranges(self) -> "DtrbSection":

@@ -11,6 +11,21 @@ force comes from the deck's ``transient_film`` model: by default the per-land ta
 discrete solution (:mod:`film_table`: force within 0.4 % of the full solve for seed 003's 3-lobe
 bearing, about 8 us a call), or the full solve at every call.
 
+What the operating point holds (one model for static, modal and transient, issue "One spindle
+model"):
+
+- the viscosity of the thermal equilibrium;
+- for a 360 deg bore fed at the maximum film (``feed="max_film"``), the film start: at the
+  maximum film of the operating point, fixed in space (:func:`geometry.fixed_feed_geometry`).
+  Its force there is the max-film force and its tangent the static solver's coefficients, so
+  ``linearized`` is the tangent of ``force_and_tangent`` at the static state (a film start that
+  turned with the journal would make them differ by the motion of the film start: 5.6 % in the
+  whirl frequency of tests/validation/test_one_model_oil_whirl.py's rotor);
+- for the tabulated film of a transient, the table's force error at the operating point, removed
+  as a constant (``force_offset_N``): the tabulated film carries the static load at exactly the
+  static position of the full solve, so a run starts in equilibrium at the state of ``static``
+  (without it the two differ by the table's error, some 0.1 % of the deflection).
+
 The Reynolds problem is solved directly in the x, y frame (angles from +x towards +y, the
 direction of rotation), so the coefficients need no rotation; for an axisymmetric 360 deg bore
 the line-of-centres solution is rotated into x, y (:mod:`equilibrium`).
@@ -27,7 +42,7 @@ import numpy as np
 
 from ..base import RADIAL, BearingBase
 from .film_model import FilmForceModel
-from .geometry import BearingGeometry
+from .geometry import BearingGeometry, fixed_feed_geometry
 from .reynolds import DEFAULT_AXIAL, DEFAULT_CIRCUMFERENTIAL, ReynoldsSolver
 from .results import ThermalResult
 from .thermal import ThermalParameters, solve_thermal
@@ -50,9 +65,13 @@ def film_model(geometry: BearingGeometry, n_circ: int, n_axial: int, method: str
 class FluidFilmBearing(BearingBase):
     """A plain or multilobe journal bearing at a shaft node.
 
-    ``load_N`` is the deck's own load magnitude (acting downward: the shaft presses the bearing
-    in -y); when ``None`` the ``static_load`` passed to :meth:`linearized` (from the rotor's
-    static equilibrium) is used.  ``viscosity_Pa_s`` is set by :meth:`at_operating_point`.
+    ``load_N`` is a load the deck puts on the bearing (acting downward: the shaft presses the
+    bearing in -y) besides what the rotor's own static equilibrium gives it (``static_load``): the
+    film works at the eccentricity that carries both.  In a rotor the journal is measured from the
+    position that carries ``load_N`` alone (``journal_offset``), so the reaction on the shaft,
+    f(q) = f_film(q + e_0) + (0, -load_N), is zero at q = 0, its tangent is :meth:`linearized`, and
+    static, modal and transient analyses see the same film (without ``load_N`` e_0 = 0 and the
+    rotor's load is the bearing's).  ``viscosity_Pa_s`` is set by :meth:`at_operating_point`.
     """
 
     name: str
@@ -66,6 +85,9 @@ class FluidFilmBearing(BearingBase):
     viscosity_Pa_s: float | None = None  # frozen operating-point viscosity (transient, static Newton)
     transient_film: str = "table"  # film force of a time integration: "table" or "reynolds"
     film_method: str = "reynolds"  # the film force in use ("table" once frozen for a transient)
+    free_geometry: BearingGeometry | None = None  # the deck's geometry when frozen with a fixed feed
+    force_offset_N: tuple[float, float] = (0.0, 0.0)  # tabulated film: its error at the operating point
+    journal_offset_m: tuple[float, float] | None = None  # e_0 held by an operating point (load_N decks)
     dof_names: tuple[str, ...] = RADIAL
 
     @property
@@ -73,9 +95,10 @@ class FluidFilmBearing(BearingBase):
         return cached_solver(self.geometry, self.n_circ, self.n_axial)
 
     def load_vector(self, static_load: np.ndarray | None = None) -> np.ndarray:
-        """(x, y) force of the shaft on the bearing used for this bearing."""
+        """(x, y) force of the shaft on the bearing: ``load_N`` (if any) plus ``static_load``."""
         if self.load_N is not None:
-            return np.array([0.0, -float(self.load_N)])
+            extra = np.zeros(2) if static_load is None else np.asarray(static_load, dtype=float).reshape(2)
+            return np.array([0.0, -float(self.load_N)]) + extra
         if static_load is None:
             raise ValueError(f"bearing {self.name!r}: no load_N in the deck and no static load given")
         w = np.asarray(static_load, dtype=float).reshape(2)
@@ -90,8 +113,24 @@ class FluidFilmBearing(BearingBase):
                              f"(got {speed * 30 / math.pi:.6g} rpm)")
         load = self.load_vector(static_load)
         base = self if self.viscosity_Pa_s is None else dataclasses.replace(  # frozen or not: one cache entry
-            self, viscosity_Pa_s=None, film_method="reynolds")
+            self, viscosity_Pa_s=None, film_method="reynolds", force_offset_N=(0.0, 0.0), journal_offset_m=None)
         return _analyze_cached(base, float(speed), float(load[0]), float(load[1]))
+
+    def free(self) -> "FluidFilmBearing":
+        """The bearing as the deck gives it (nothing held by an operating point)."""
+        if self.viscosity_Pa_s is None and self.free_geometry is None:
+            return self
+        return dataclasses.replace(self, geometry=self.free_geometry or self.geometry, free_geometry=None,
+                                   viscosity_Pa_s=None, film_method="reynolds", force_offset_N=(0.0, 0.0),
+                                   journal_offset_m=None)
+
+    def journal_offset(self, speed: float) -> np.ndarray:
+        """e_0: the journal position carrying ``load_N`` alone (zero without ``load_N``)."""
+        if self.load_N is None:
+            return np.zeros(2)
+        if self.journal_offset_m is not None:
+            return np.asarray(self.journal_offset_m, float)
+        return self.free().analyze(speed).film.position_m.copy()
 
     def linearized(self, speed: float, static_load: np.ndarray | None = None):
         """(K [2x2] N/m, C [2x2] N s/m) in the x, y frame at the thermal equilibrium."""
@@ -99,19 +138,35 @@ class FluidFilmBearing(BearingBase):
         return res.film.K_N_m.copy(), res.film.C_Ns_m.copy()
 
     def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
-        """The journal position of the thermal equilibrium at (speed, load)."""
-        return self.analyze(speed, static_load).film.position_m.copy()
+        """The journal position of the thermal equilibrium at (speed, load), from ``journal_offset``."""
+        return self.analyze(speed, static_load).film.position_m - self.journal_offset(speed)
 
     def at_operating_point(self, speed: float, static_load: np.ndarray | None = None,
                            transient: bool = False) -> "FluidFilmBearing":
-        """This bearing with the viscosity of the thermal equilibrium at (speed, load) held fixed; for a
-        time integration with the deck's ``transient_film`` force model."""
-        mu = self.analyze(speed, static_load).film.viscosity_Pa_s
-        return dataclasses.replace(self, viscosity_Pa_s=float(mu),
-                                   film_method=self.transient_film if transient else "reynolds")
+        """This bearing with what the operating point at (speed, load) sets held fixed (module note):
+        the viscosity of the thermal equilibrium, a max-film bore's film start; for a time
+        integration with the deck's ``transient_film`` force model."""
+        free = self.free()
+        film = free.analyze(speed, static_load).film
+        offset = tuple(float(v) for v in free.journal_offset(speed)) if self.load_N is not None else None
+        free = dataclasses.replace(free, journal_offset_m=offset)
+        geo, base = free.geometry, None
+        if geo.axisymmetric and not geo.lands[0].periodic:  # feed max_film: the film start stays put
+            x, y = film.position_m
+            geo, base = fixed_feed_geometry(geo, math.atan2(y, x) + math.pi), free.geometry
+        held = dataclasses.replace(free, geometry=geo, free_geometry=base, viscosity_Pa_s=float(film.viscosity_Pa_s))
+        method = self.transient_film if transient else "reynolds"
+        if method == "reynolds":
+            return held
+        table = film_model(geo, self.n_circ, self.n_axial, method)
+        q0 = np.asarray(film.position_m, float)
+        f_table = table.force_and_tangent(q0, np.zeros(2), speed, float(film.viscosity_Pa_s))[0]
+        f_exact = -free.load_vector(static_load)
+        return dataclasses.replace(held, film_method=method, force_offset_N=tuple(float(v) for v in f_exact - f_table))
 
     def force_and_tangent(self, q, v, t=0.0, speed=0.0, angle=None):
-        """Film force on the journal at displacement q and velocity v, and its tangent (contract)."""
+        """Film force on the journal at displacement q and velocity v, and its tangent (contract);
+        with ``load_N``, f_film(q + e_0) + (0, -load_N) (class note)."""
         mu = self.viscosity_Pa_s
         if mu is None:
             if self.load_N is None:
@@ -119,7 +174,15 @@ class FluidFilmBearing(BearingBase):
                                  "(static load) that fixes its thermal-equilibrium viscosity")
             mu = self.analyze(speed).film.viscosity_Pa_s
         model = film_model(self.geometry, self.n_circ, self.n_axial, self.film_method)
-        return model.force_and_tangent(np.asarray(q, float), np.asarray(v, float), speed, mu)
+        q = np.asarray(q, float)
+        if self.load_N is not None:
+            q = q + self.journal_offset(speed)
+        f, K, C = model.force_and_tangent(q, np.asarray(v, float), speed, mu)
+        if self.force_offset_N != (0.0, 0.0):
+            f = f + np.asarray(self.force_offset_N)
+        if self.load_N is not None:
+            f = f + np.array([0.0, -float(self.load_N)])
+        return f, K, C
 
 
 @functools.lru_cache(maxsize=256)

@@ -40,8 +40,8 @@ class Oil(DeckModel):
 
     grade: Optional[str] = None
     viscosity_Pa_s: Optional[PositiveFloat] = None
-    walther_m: Optional[PositiveFloat] = None
-    walther_k: Optional[PositiveFloat] = None
+    walther_m: Optional[Annotated[float, Field(gt=0, le=100.0)]] = None  # slope B (dimensionless)
+    walther_k: Optional[Annotated[float, Field(gt=0, le=100.0)]] = None  # constant A (dimensionless)
     density_kg_m3: Optional[PositiveFloat] = None
     specific_heat_J_kgK: Optional[PositiveFloat] = None
     inlet_C: float = 40.0

@@ -40,6 +40,9 @@ ISO_VG_100C_TYPICAL: dict[int, float] = {
 }
 #: Walther slope used for VG 2-7 (that of VG 10 from the two points above)
 LIGHT_OIL_SLOPE = 3.935
+#: mean film temperature above which a mineral oil is past its usable range (its oxidation life
+#: halves every ~10 C; 120 C is the usual upper limit of circulating-oil systems)
+OIL_MAX_C = 120.0
 
 
 def _ll(nu_cst: float) -> float:

@@ -28,8 +28,8 @@ class CoefficientTable(DeckModel):
     """Speed-dependent coefficients, interpolated linearly in speed (held constant outside)."""
 
     speed_rpm: Annotated[list[NonNegFloat], Field(min_length=2, max_length=10_000)]
-    K_N_m: list[Matrix2]
-    C_Ns_m: list[Matrix2]
+    K_N_m: Annotated[list[Matrix2], Field(max_length=10_000)]
+    C_Ns_m: Annotated[list[Matrix2], Field(max_length=10_000)]
 
     @model_validator(mode="after")
     def _rows(self) -> "CoefficientTable":

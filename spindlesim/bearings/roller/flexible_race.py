@@ -292,16 +292,36 @@ class FlexibleRaceBearing(BearingBase):
             C[:, k] = -(self._force(q, v + e, speed, a) - self._force(q, v - e, speed, a)) / (2 * dv[k])
         return f, K, C
 
-    def _condensed(self, q: np.ndarray, speed: float, angle: float) -> np.ndarray:
-        """Node stiffness with the internal DOFs statically condensed (free rollers drop out)."""
-        _, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
+    def _condensed(self, q: np.ndarray, speed: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
+        """(node force, node stiffness) with the internal DOFs statically condensed (free rollers drop out)."""
+        f, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
         Kii = K[2:, 2:]
-        return K[:2, :2] - K[:2, 2:] @ np.linalg.pinv(Kii, rcond=1e-12) @ K[2:, :2]
+        return f[:2], K[:2, :2] - K[:2, 2:] @ np.linalg.pinv(Kii, rcond=1e-12) @ K[2:, :2]
+
+    def _internal_scale(self) -> np.ndarray:
+        return np.concatenate([[1e-7] * self.rollers, np.tile([1e-7, 1e-7, 1e-5], self.ring.segments)])
+
+    def held_node(self, q_node: np.ndarray, speed: float, angle: float, internal0: np.ndarray,
+                  force_scale: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(node force, condensed node stiffness, internal DOFs) with the node held at ``q_node`` and
+        the rollers and race in equilibrium (quasi-static: their modes are ~100 kHz); the internal
+        forces are balanced to 1e-10 of ``force_scale`` (the bearing load) or their round-off floor."""
+        qn = np.asarray(q_node, float)[:2]
+        s = max(float(force_scale), 1.0)
+
+        def ft(z):
+            q = np.concatenate([qn, z])
+            f, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
+            return f[2:] / s, K[2:, 2:] / s
+
+        z = equilibrium_under_load(ft, np.zeros(1), internal0, self._internal_scale(), self.name, tol=1e-10)
+        f, K = self._condensed(np.concatenate([qn, z]), speed, angle)
+        return f, K, z
 
     def static_displacement(self, speed: float, static_load=None, angle: float = 0.0) -> np.ndarray:
         """Contract coordinates where the bearing alone carries ``static_load`` at a shaft angle."""
         W = np.zeros(2) if static_load is None else np.asarray(static_load, float)[:2]
-        scale = np.concatenate([[1e-7] * (2 + self.rollers), np.tile([1e-7, 1e-7, 1e-5], self.ring.segments)])
+        scale = np.concatenate([[1e-7] * 2, self._internal_scale()])
 
         def ft(q):
             f, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
@@ -310,15 +330,40 @@ class FlexibleRaceBearing(BearingBase):
         return equilibrium_under_load(ft, W, np.zeros(self.n_pos), scale, self.name, tol=1e-8)
 
     def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
-        """Condensed tangent at the static state, averaged over PITCH_POINTS cage positions of one
-        roller pitch (the race and roller modes, ~100 kHz, are quasi-static for a rotor); C = 0."""
+        """The tangent of the pitch-averaged reaction at the static state; C = 0 (the contract).
+
+        The node reaction with the rollers and race in equilibrium (condensed: their modes, ~100
+        kHz, are quasi-static for a rotor) is averaged over PITCH_POINTS cage positions of one
+        roller pitch; the static state is the node displacement at which that average carries
+        ``static_load`` (Newton on the two node DOFs), and K is the average of the condensed
+        tangents there: the derivative of the averaged reaction, as the rigid race's
+        ``pitch_average``.  (Averaging the tangents of each cage position's own equilibrium
+        instead differs by the variation of the equilibrium over the pitch: 12 % in K_xx for the
+        rotor of decks/validation/roller_rotor.yaml.)"""
+        W = np.zeros(2) if static_load is None else np.asarray(static_load, float)[:2]
         pitch = 2.0 * np.pi / self.rollers / self.kinematics.cage_ratio
-        Ks = []
-        for k in range(PITCH_POINTS):
-            a = pitch * k / PITCH_POINTS
-            Ks.append(self._condensed(self.static_displacement(speed, static_load, a), speed, a))
-        K = np.mean(Ks, axis=0)
-        return 0.5 * (K + K.T), np.zeros((2, 2))
+        angles = pitch * np.arange(PITCH_POINTS) / PITCH_POINTS
+        starts = [self.static_displacement(speed, static_load, a) for a in angles]
+        qn = np.mean([s[:2] for s in starts], axis=0)
+        internal = [s[2:] for s in starts]
+        f_scale = max(float(np.max(np.abs(W))), 1.0)
+        previous = np.inf
+        for _ in range(30):
+            held = [self.held_node(qn, speed, a, z, f_scale) for a, z in zip(angles, internal)]
+            internal = [h[2] for h in held]
+            F = np.mean([h[0] for h in held], axis=0)
+            K = np.mean([h[1] for h in held], axis=0)
+            r = F + W
+            rn = float(np.max(np.abs(r)))
+            # converged, or stalled at the round-off floor of the internal equilibria
+            if rn <= 1e-10 * f_scale or (rn > 0.5 * previous and rn <= 1e-7 * f_scale):
+                break
+            previous = rn
+            qn = qn + np.linalg.solve(K, r)
+        else:
+            raise ArithmeticError(f"bearing {self.name!r}: the pitch-averaged reaction found no static state "
+                                  f"(residual {np.max(np.abs(r)):.3g} N)")
+        return K, np.zeros((2, 2))
 
     def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
         from . import flexible_race_kernel as kernel

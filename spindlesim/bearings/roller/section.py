@@ -67,9 +67,9 @@ class TransientContact(DeckModel):
     """Eq. 30-31 parameters of the roller contacts (flexible_race model)."""
 
     damping_Ns_m2: NonNegFloat = 1.8e9  # c, with m2 = 1, m3 = 1
-    velocity_exponent: PositiveFloat = 1.0
-    indentation_exponent: NonNegFloat = 1.0
-    friction: NonNegFloat = 0.0
+    velocity_exponent: Annotated[float, Field(gt=0, le=10.0)] = 1.0
+    indentation_exponent: Annotated[float, Field(ge=0, le=10.0)] = 1.0
+    friction: Annotated[float, Field(ge=0, le=10.0)] = 0.0
     slip_regularisation_m_s: PositiveFloat = 1e-3
 
 
@@ -84,7 +84,7 @@ class TransientHousing(DeckModel):
     stiffness_N_m2: PositiveFloat = 1.2e11
     damping_Ns_m2: NonNegFloat = 2.0e4
     tangential_stiffness_N_m2: NonNegFloat = 1.2e9
-    friction: NonNegFloat = 0.0
+    friction: Annotated[float, Field(ge=0, le=10.0)] = 0.0
     # the segment's outer face sits on the bore (seed 000 "surface contact"): it resists rocking with
     # k s^2/12, s the segment's arc on the housing radius; false = point support (no rocking stiffness)
     surface_contact: bool = True
@@ -198,7 +198,7 @@ class TransientSection(DeckModel):
     outer_race: TransientOuterRace = TransientOuterRace()
     contact: TransientContact = TransientContact()
     housing: TransientHousing = TransientHousing()
-    waviness: list[TransientWaviness] = []
+    waviness: Annotated[list[TransientWaviness], Field(max_length=64)] = []
     integrator: TransientIntegrator = TransientIntegrator()
 
     @model_validator(mode="after")

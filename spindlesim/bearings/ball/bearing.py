@@ -1,0 +1,427 @@
+"""`BallBearing`: angular-contact / deep-groove ball bearing (single row or matched set), 5 DOF.
+
+The bearing contract (``spindlesim.bearings.base``): q = (x, y, z, theta_x, theta_y) of the inner
+ring (the shaft node) measured from the bearing centre; f the force and moment ON THE SHAFT;
+K_t = -df/dq exact (implicit-function Jacobian through every ball equilibrium, :mod:`.kernel`);
+C_t = 0 (no damping model).  Outer rings fixed, inner ring turning at ``speed``.
+
+Inner-ring kinematics at ball j of row k (azimuth psi, row at z_k, thrust direction s_k; small
+displacements, Jones 1960; Harris and Kotzalas 2007, *Advanced Concepts*, ch. 1 and 3): the inner
+groove curvature centre O_i, at radius R_i = d_m/2 + (r_i - D/2) cos(alpha_f) and axial position
+z_c = z_k + s_k (r_i - D/2) sin(alpha_f), moves by u = (x, y, z) + theta x O_i, so
+
+    A_a = A0 sin(alpha0) + c_k - s_k w_k + s_k (z + R_i (theta_x sin psi - theta_y cos psi))
+    A_r = A0 cos(alpha0) - P_d/2 + (x + z_c theta_y) cos psi + (y - z_c theta_x) sin psi
+
+(c_k: position-preload offset; w_k: axial shift of a floating outer ring).  The ball forces
+act at O_i (their line of action passes through it), so f = sum T^T G (+ the inner friction
+couple, full model only) is the exact work conjugate of q and the rest tangent is symmetric.
+
+Preload (one choice for the whole set):
+- ``position``: ``axial_m`` is the total axial approach that clamping imposes on the set beyond
+  first contact (the catalogue "preload offset" of a matched pair: the gap between the ring
+  faces that the clamping closes).  Each row's inner ring then sits axial_m / 2 past first
+  contact in its own thrust direction; the node's z absorbs any unequal split (3-row sets), so
+  q = 0 is the centre of a symmetric set.  Needs opposed rows (DB or DF).
+- ``spring`` (constant pressure): the outer rings of the floating rows (those with the thrust
+  direction of the last row; every row of a single bearing or tandem set) slide axially in the
+  housing and are pushed by a constant force ``axial_N``; their axial shift is solved for at
+  every q and condensed out of the tangent (the floating rows add no axial stiffness).  The
+  housing still holds them radially and in tilt.
+- ``none``: rings at first contact (q = 0), clearance as given.
+
+Ball positions: psi_j = phi + 2 pi j / Z in every row (rows aligned), phi = cage angle =
+(1 - gamma)/2 times the shaft angle (kinematic cage ratio at alpha_f).  ``linearized`` averages
+the tangent over ``pitch_samples`` cage positions within one ball pitch, each at its own
+equilibrium under the load (the contract's rolling-bearing rule).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..base import FIVE, BearingBase, shaft_angle
+from . import kernel as kn
+from .geometry import BallGeometry
+from .rating import RatingInputs, lives
+from .results import BallState
+
+log = logging.getLogger(__name__)
+
+MODELS = ("outer_race_control", "full")
+#: traction coefficient above which the state warns that the gyroscopic couple exceeds friction
+TRACTION_WARN = 0.1
+
+
+class BallEquilibriumError(ArithmeticError):
+    """A ball, floating ring or set equilibrium did not converge."""
+
+
+@dataclass(frozen=True)
+class Preload:
+    """Preload of the set in SI: kind none | position (axial_m) | spring (axial_N)."""
+
+    kind: str = "none"
+    axial_m: float = 0.0
+    axial_N: float = 0.0
+
+    def label(self) -> str:
+        if self.kind == "position":
+            return f"position preload {self.axial_m * 1e6:.3g} um"
+        if self.kind == "spring":
+            return f"spring preload {self.axial_N:.4g} N"
+        return "no preload"
+
+
+@dataclass(frozen=True)
+class _RowEval:
+    f_rows: np.ndarray
+    K_rows: np.ndarray
+    Qi: np.ndarray
+    Qo: np.ndarray
+    ai: np.ndarray
+    ao: np.ndarray
+    Fc: np.ndarray
+    Mg: np.ndarray
+    psi: np.ndarray
+
+
+@dataclass(frozen=True)
+class _SetEval:
+    f: np.ndarray
+    K: np.ndarray
+    rows: _RowEval
+    shift: float  # outer-ring axial shift of the floating rows [m] (along z)
+
+
+class BallBearing(BearingBase):
+    """Quasi-static ball bearing (set); immutable apart from warm-start hints."""
+
+    dof_names = FIVE
+    internal_mass = np.zeros(0)
+
+    def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
+                 model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4):
+        if model not in MODELS:
+            raise ValueError(f"model must be one of {MODELS}, not {model!r}")
+        if preload.kind not in ("none", "position", "spring"):
+            raise ValueError(f"unknown preload kind {preload.kind!r}")
+        s = geometry.row_sign
+        if preload.kind == "position" and not (np.any(s > 0) and np.any(s < 0)):
+            raise ValueError("a position preload needs opposed rows (arrangement DB or DF)")
+        if preload.kind == "spring" and not preload.axial_N > 0.0:
+            raise ValueError("a spring preload needs a positive axial force")
+        if pitch_samples < 1:
+            raise ValueError("pitch_samples must be >= 1")
+        self.geometry = geometry
+        self.preload = preload
+        self.name = str(name)
+        self.node = int(node)
+        self.model = model
+        self.rating = rating
+        self.pitch_samples = int(pitch_samples)
+        g = geometry
+        D, dm = g.ball_diameter_m, g.pitch_diameter_m
+        p = np.zeros(kn.N_PARAMS)
+        p[kn.G_I] = (g.inner_conformity - 0.5) * D
+        p[kn.G_O] = (g.outer_conformity - 0.5) * D
+        p[kn.K_I], p[kn.K_O], p[kn.K_N] = g.inner.K, g.outer.K, g.K_series
+        p[kn.GAMMA] = D / dm
+        p[kn.M_HALF_DM] = g.ball_mass_kg * 0.5 * dm
+        p[kn.J_BALL] = g.ball_inertia_kg_m2
+        p[kn.D_BALL] = D
+        p[kn.R_I_GROOVE] = g.inner_groove_radius_m
+        p[kn.LAM_I], p[kn.LAM_O] = (0.0, 2.0) if model == "outer_race_control" else (1.0, 1.0)
+        p[kn.FULL] = 0.0 if model == "outer_race_control" else 1.0
+        p[kn.A_AX0], p[kn.A_RAD0] = g.reference_axial_m, g.reference_radial_m
+        p[kn.R_I_CENTRE] = g.inner_centre_radius_m
+        p[kn.A_0] = g.groove_distance_m
+        p[kn.SPLIT_O] = 1.0 / (1.0 + (g.outer.K / g.inner.K) ** (2.0 / 3.0))
+        p[kn.FC_FLOOR] = 1e-8 * g.K_series * 1e-9  # 1e-8 of the series Hertz load at 1 um
+        self._p = p
+        self._row_sign = np.ascontiguousarray(s, dtype=np.int64)
+        self._row_zc = g.row_z_m + s * g.inner_centre_offset_m
+        self._row_offset = np.full(g.rows, 0.5 * preload.axial_m if preload.kind == "position" else 0.0)
+        self._s_float = int(s[-1])
+        self._floating = (s == s[-1]) if preload.kind == "spring" else np.zeros(g.rows, bool)
+        self.fully_floating = bool(self._floating.all())
+        self._X = np.full((g.rows, g.balls, 2), np.nan)  # warm start of the ball centres
+        self._shift_hint: float | None = None
+
+    # ---- variants -------------------------------------------------------------------------
+    def with_preload(self, value: float) -> "BallBearing":
+        """Same bearing with another preload of the same kind: axial_m (position) or axial_N (spring)."""
+        if self.preload.kind == "position":
+            pre = replace(self.preload, axial_m=float(value))
+        elif self.preload.kind == "spring":
+            pre = replace(self.preload, axial_N=float(value))
+        else:
+            raise ValueError("the bearing has no preload to vary")
+        return self._copy(preload=pre)
+
+    def with_model(self, model: str) -> "BallBearing":
+        return self._copy(model=model)
+
+    def _copy(self, **kw) -> "BallBearing":
+        args = dict(preload=self.preload, name=self.name, node=self.node, model=self.model, rating=self.rating,
+                    pitch_samples=self.pitch_samples)
+        args.update(kw)
+        return BallBearing(self.geometry, **args)
+
+    # ---- kinematics -------------------------------------------------------------------------
+    def cage_angle(self, shaft_angle_rad: float) -> float:
+        return self.geometry.cage_ratio() * shaft_angle_rad
+
+    def frequencies_hz(self, speed: float) -> dict[str, float]:
+        """Kinematic frequencies at the mounted free contact angle (see BallGeometry)."""
+        f = self.geometry.kinematic_frequencies_hz(speed)
+        f.pop("shaft")
+        return f
+
+    # ---- evaluation ---------------------------------------------------------------------------
+    def _rows(self, q: np.ndarray, om: float, phi: float, w: np.ndarray, idx: np.ndarray) -> _RowEval:
+        g = self.geometry
+        n, Z = idx.size, g.balls
+        X = np.ascontiguousarray(self._X[idx])
+        f_rows, K_rows = np.empty((n, 5)), np.empty((n, 5, 5))
+        out = [np.empty((n, Z)) for _ in range(7)]
+        status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._p,
+                                  self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
+                                  np.ascontiguousarray(w[idx], dtype=float), Z, X, f_rows, K_rows, *out)
+        if status >= 0:
+            k, j = idx[status // Z], status % Z
+            psi = phi + 2.0 * math.pi * j / Z
+            self._X[:] = np.nan
+            raise BallEquilibriumError(
+                f"bearing {self.name!r}: equilibrium of ball {j} of row {k} (psi {math.degrees(psi) % 360:.1f} deg) "
+                f"did not converge (damped Newton on the ball centre, {kn.MAX_NEWTON} iterations) at "
+                f"{om * 30 / math.pi:.6g} rpm, inner ring at q = {np.round(np.asarray(q) * 1e6, 4).tolist()} "
+                f"(um, urad), model {self.model}")
+        self._X[idx] = X
+        Qi, Qo, ai, ao, Fc, Mg, psi = out
+        return _RowEval(f_rows, K_rows, Qi, Qo, ai, ao, Fc, Mg, psi)
+
+    def _evaluate(self, q: np.ndarray, om: float, phi: float) -> _SetEval:
+        rows = self.geometry.rows
+        all_rows = np.arange(rows)
+        if self.preload.kind != "spring":
+            ev = self._rows(q, om, phi, np.zeros(rows), all_rows)
+            return _SetEval(ev.f_rows.sum(axis=0), ev.K_rows.sum(axis=0), ev, 0.0)
+        fl = np.flatnonzero(self._floating)
+        shift, evf = self._float_solve(q, om, phi, fl)
+        w = np.zeros(rows)
+        w[fl] = shift
+        fixed = np.flatnonzero(~self._floating)
+        ev = _merge(rows, fl, evf, fixed, self._rows(q, om, phi, w, fixed)) if fixed.size else evf
+        Kg = evf.K_rows.sum(axis=0)
+        Kc = Kg - np.outer(Kg[:, 2], Kg[2, :]) / Kg[2, 2]
+        Kc[2, :] = 0.0
+        Kc[:, 2] = 0.0
+        K = Kc + (ev.K_rows.sum(axis=0) - Kg)
+        return _SetEval(ev.f_rows.sum(axis=0), K, ev, shift)
+
+    def _float_solve(self, q, om, phi, fl) -> tuple[float, _RowEval]:
+        """Axial shift w (along z) of the floating outer rings with their thrust = axial_N."""
+        g = self.geometry
+        Fs, sg = self.preload.axial_N, self._s_float
+        rows = g.rows
+
+        def thrust(v):  # v: approach in the floating rows' direction, w = -sg v
+            w = np.zeros(rows)
+            w[fl] = -sg * v
+            ev = self._rows(q, om, phi, w, fl)
+            return -sg * ev.f_rows[:, 2].sum(), ev.K_rows[:, 2, 2].sum(), ev
+
+        if self._shift_hint is None:
+            per_ball = Fs / (fl.size * g.balls * max(math.sin(g.mounted_angle_rad), 0.05))
+            v = (per_ball / g.K_series) ** (2.0 / 3.0) / max(math.sin(g.mounted_angle_rad), 0.05) - sg * q[2]
+        else:
+            v = self._shift_hint - sg * q[2]
+        lo = hi = None
+        for _ in range(200):
+            h, k, ev = thrust(v)
+            r = h - Fs
+            if abs(r) <= 1e-12 * Fs:
+                self._shift_hint = v + sg * q[2]
+                return -sg * v, ev
+            if r < 0.0:
+                lo = v
+            else:
+                hi = v
+            vn = v - r / k if k > 0.0 else v + max(1e-6, abs(v))
+            if lo is not None and hi is not None and not lo < vn < hi:
+                vn = 0.5 * (lo + hi)
+            if lo is not None and hi is not None and hi - lo <= 1e-16 * max(abs(v), 1e-3):
+                self._shift_hint = v + sg * q[2]
+                return -sg * v, ev
+            v = vn
+        raise BallEquilibriumError(
+            f"bearing {self.name!r}: floating outer ring(s) found no axial position carrying the spring "
+            f"force {Fs:g} N (Newton with bisection, 200 iterations; residual {r:.3g} N) at "
+            f"{om * 30 / math.pi:.6g} rpm, q = {np.round(np.asarray(q) * 1e6, 4).tolist()} (um, urad)")
+
+    # ---- the contract ---------------------------------------------------------------------------
+    def force_and_tangent(self, q, v, t, speed, angle=None):
+        """(f, K_t, C_t) on (x, y, z, theta_x, theta_y); C_t = 0."""
+        qq = np.asarray(q, float)
+        ev = self._evaluate(qq, float(speed), self.cage_angle(shaft_angle(speed, t, angle)))
+        return ev.f.copy(), ev.K.copy(), np.zeros((5, 5))
+
+    def linearized(self, speed, static_load=None):
+        """(K, C) at the equilibrium under ``static_load`` (5 entries; None = 0), K averaged over
+        ``pitch_samples`` cage positions within one ball pitch; C = 0."""
+        load = np.zeros(5)
+        if static_load is not None:
+            sl = np.asarray(static_load, float)
+            load[: sl.size] = sl
+        pitch = 2.0 * math.pi / self.geometry.balls
+        K = np.zeros((5, 5))
+        q = None
+        for m in range(self.pitch_samples):
+            q, ev, _ = self._equilibrium(load, float(speed), m * pitch / self.pitch_samples, q)
+            K += ev.K
+        return K / self.pitch_samples, np.zeros((5, 5))
+
+    def static_displacement(self, speed, static_load=None) -> np.ndarray:
+        """Inner-ring displacement carrying ``static_load`` at cage angle 0 (the contract)."""
+        load = np.zeros(5)
+        if static_load is not None:
+            sl = np.asarray(static_load, float)
+            load[: sl.size] = sl
+        return self._equilibrium(load, float(speed), 0.0)[0].copy()
+
+    # ---- equilibrium and results ---------------------------------------------------------------
+    def _reference_stiffness(self) -> np.ndarray:
+        """Diagonal scale of the Levenberg-Marquardt damping of the set Newton: every ball at 1 um
+        approach, the same for every DOF once tilts are measured at the groove-centre radius (a
+        clearance or an unloaded row then gives steps along the residual, not along one DOF)."""
+        g = self.geometry
+        k1 = 1.5 * g.K_series * math.sqrt(1e-6) * g.balls * g.rows * 0.5
+        R = g.inner_centre_radius_m
+        return k1 * np.array([1.0, 1.0, 1.0, R * R, R * R])
+
+    def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100):
+        """(q, evaluation, iterations) with reaction(q) + load = 0 (damped Newton on 5 DOFs)."""
+        g = self.geometry
+        L = np.asarray(load, float)
+        R = g.inner_centre_radius_m
+        wgt = np.array([1.0, 1.0, 1.0, 1.0 / R, 1.0 / R])
+        pre = self.preload.axial_N if self.preload.kind == "spring" else 0.0
+        f_scale = max(1.0, float(np.max(np.abs(L * wgt))), pre)
+        tol = 1e-10 * f_scale
+        dofs = np.array([0, 1, 3, 4]) if self.fully_floating else np.arange(5)
+        if self.fully_floating:
+            thrust = self._s_float * self.preload.axial_N
+            if abs(L[2] - thrust) > 1e-9 * max(abs(thrust), abs(L[2])):
+                raise ValueError(
+                    f"bearing {self.name!r}: every row floats on the spring, so it carries exactly the spring "
+                    f"force axially; the axial load must be fz = {thrust:g} N, not {L[2]:g} N")
+        q = np.zeros(5) if q0 is None else np.array(q0, float)
+        ref = self._reference_stiffness()
+        lam = 1e-4
+        ev = self._evaluate(q, speed, phi)
+        r = ev.f + L
+        merit = float(np.linalg.norm((r * wgt)[dofs]))  # acceptance: weighted 2-norm (descent of LM)
+        worst = float(np.max(np.abs((r * wgt)[dofs])))  # convergence: every component
+        for it in range(1, max_iter + 1):
+            if worst <= tol:
+                return q, ev, it - 1
+            A = ev.K[np.ix_(dofs, dofs)] + lam * np.diag(ref[dofs])
+            step = np.zeros(5)
+            step[dofs] = np.linalg.solve(A, r[dofs])
+            big = float(np.max(np.abs(step / wgt))) / 20e-6
+            if big > 1.0:
+                step /= big
+            trial = q + step
+            evt = self._evaluate(trial, speed, phi)
+            rt = evt.f + L
+            mt = float(np.linalg.norm((rt * wgt)[dofs]))
+            # equal merit is accepted: inside a clearance the reaction does not change
+            if mt <= merit:
+                q, ev, r, merit = trial, evt, rt, mt
+                worst = float(np.max(np.abs((r * wgt)[dofs])))
+                lam = max(lam * 0.01, 1e-14)
+            else:
+                lam *= 10.0
+                if lam > 1e10:
+                    break
+        raise BallEquilibriumError(
+            f"bearing {self.name!r}: no set equilibrium under the load {np.round(L, 6).tolist()} (N, N m) at "
+            f"{speed * 30 / math.pi:.6g} rpm, cage angle {math.degrees(phi):.3g} deg ({self.preload.label()}): "
+            f"damped Newton on (x, y, z, theta_x, theta_y), {max_iter} iterations, residual {worst:.3g} N")
+
+    def equilibrium(self, load, speed: float = 0.0, cage_angle: float = 0.0) -> np.ndarray:
+        """Inner-ring displacement q (5) carrying ``load`` (what the shaft puts on the bearing)."""
+        return self._equilibrium(load, float(speed), float(cage_angle))[0].copy()
+
+    def state(self, load, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
+        """Equilibrium under ``load`` (Fx, Fy, Fz [N], Mx, My [N m]) at ``speed`` [rad/s], with results."""
+        q, ev, its = self._equilibrium(load, float(speed), float(cage_angle))
+        return self._state(q, ev, float(speed), float(cage_angle), its, load)
+
+    def state_at(self, q, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
+        """Results at a given inner-ring displacement q (5)."""
+        qq = np.array(q, float)
+        return self._state(qq, self._evaluate(qq, float(speed), float(cage_angle)), float(speed),
+                           float(cage_angle), 0)
+
+    def _state(self, q, ev: _SetEval, speed: float, phi: float, iterations: int, load=None) -> BallState:
+        """Results; ``load`` (the load the equilibrium carries) feeds ISO 281, default -reaction."""
+        g = self.geometry
+        r = ev.rows
+        c_i, c_o = np.cbrt(np.maximum(r.Qi, 0.0)), np.cbrt(np.maximum(r.Qo, 0.0))
+        row_axial = -g.row_sign * r.f_rows[:, 2]
+        load = -ev.f if load is None else np.asarray(load, float)
+        lf = lives(g, self.rating, r.Qi, r.Qo, math.hypot(load[0], load[1]), load[2])
+        traction = self._traction(r)
+        if np.nanmax(traction, initial=0.0) > TRACTION_WARN:
+            k, j = np.unravel_index(int(np.nanargmax(traction)), traction.shape)
+            log.warning("bearing %r at %.6g rpm: the gyroscopic couple of ball %d of row %d needs a traction "
+                        "coefficient of %.3g; above about %.2g the ball would pivot (gyroscopic slip), which this "
+                        "quasi-static model does not represent", self.name, speed * 30 / math.pi, j, k,
+                        traction[k, j], TRACTION_WARN)
+        if g.contact_angle_rad > 0.0 and np.any((r.ai < 0.0) & (r.Qi > 0.0)):
+            log.warning("bearing %r: loaded balls with a negative contact angle: an angular-contact ring would "
+                        "run on its low shoulder (the groove is modelled as a full torus)", self.name)
+        return BallState(
+            displacement=np.array(q, float), reaction=ev.f.copy(), load=load.copy(), stiffness=ev.K.copy(),
+            speed_rad_s=speed,
+            cage_angle_rad=phi, psi_rad=r.psi.copy(), row_z_m=g.row_z_m.copy(), row_sign=g.row_sign.copy(),
+            element_load_inner_N=r.Qi.copy(), element_load_outer_N=r.Qo.copy(),
+            contact_angle_inner_deg=np.degrees(r.ai), contact_angle_outer_deg=np.degrees(r.ao),
+            max_pressure_inner_Pa=g.inner.p1 * c_i, max_pressure_outer_Pa=g.outer.p1 * c_o,
+            semi_axes_inner_m=np.stack([g.inner.a1 * c_i, g.inner.b1 * c_i], axis=-1),
+            semi_axes_outer_m=np.stack([g.outer.a1 * c_o, g.outer.b1 * c_o], axis=-1),
+            centrifugal_force_N=r.Fc.copy(), gyroscopic_moment_Nm=r.Mg.copy(), traction_ratio=traction,
+            row_axial_load_N=row_axial,
+            floating_ring_axial_m=float(ev.shift), lives=lf, iterations=int(iterations),
+        )
+
+
+    def _traction(self, r: _RowEval) -> np.ndarray:
+        """Friction force over normal load at the contacts that carry the gyroscopic couple (the larger
+        of the two in the full model); inf where that contact is unloaded but a couple is needed."""
+        D = self.geometry.ball_diameter_m
+        lam_i, lam_o = (0.0, 2.0) if self.model == "outer_race_control" else (1.0, 1.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out = np.where(r.Mg != 0.0, np.abs(lam_o * r.Mg / D) / r.Qo, 0.0)
+            if lam_i:
+                out = np.maximum(out, np.where(r.Mg != 0.0, np.abs(lam_i * r.Mg / D) / r.Qi, 0.0))
+        return out
+
+
+def _merge(rows: int, ia: np.ndarray, ea: _RowEval, ib: np.ndarray, eb: _RowEval) -> _RowEval:
+    """Row evaluations of two row subsets back in row order."""
+    parts = {}
+    for field in ("f_rows", "K_rows", "Qi", "Qo", "ai", "ao", "Fc", "Mg", "psi"):
+        a = getattr(ea, field)
+        out = np.empty((rows,) + a.shape[1:])
+        out[ia] = a
+        if ib.size:
+            out[ib] = getattr(eb, field)
+        parts[field] = out
+    return _RowEval(**parts)

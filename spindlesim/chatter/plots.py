@@ -1,0 +1,187 @@
+"""Figures of the chatter results (matplotlib Figure API, no pyplot state, no files written).
+
+Each function returns a :class:`matplotlib.figure.Figure`; saving is the caller's business.
+Plots only draw what the results hold; they compute no physics (the FRF figure evaluates a
+state-space model on its own frequency grid).
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from .frf import DIRECTIONS, ToolPointFrf
+from .results import LobeDiagram, SimulationResult
+from .state_space import ToolPointModel
+
+__all__ = ["lobe_diagram_figure", "frf_figure", "stability_map_figure", "simulation_figure"]
+
+_KIND_STYLE = {"hopf": ("C0", "-"), "flip": ("C3", "-"), "fold": ("C2", "-"), "": ("C0", "-")}
+
+
+def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lobes: bool = True,
+                        simulations: Sequence[SimulationResult] = (), depth_max_mm: float | None = None) -> Figure:
+    """Limit depth [mm] against speed [rpm]; stable region shaded, lobe numbers at each lobe's minimum.
+
+    Flip (period-doubling) parts of a semi-discretization boundary are drawn in red.
+    Simulated points: o stable, x chatter.
+    """
+    fig = Figure(figsize=(9.0, 5.0), layout="constrained")
+    ax = fig.add_subplot()
+    n = diagram.speed_rpm
+    lim = 1e3 * diagram.limit_depth_m
+    top = depth_max_mm or (1.15 * np.nanmax(lim) if np.any(np.isfinite(lim)) else 1.0)
+    if diagram.stability_map is not None:
+        top = depth_max_mm or 1e3 * diagram.stability_map.depth_m[-1]
+    ax.fill_between(n, 0.0, np.where(np.isfinite(lim), lim, top), color="C2", alpha=0.18, lw=0,
+                    label="stable")
+    if show_lobes:
+        for c in diagram.lobes:
+            if diagram.method != "semi_discretization":
+                ax.plot(c.speed_rpm, 1e3 * c.limit_depth_m, color="0.6", lw=0.7)
+    ax.plot(n, lim, color="C0", lw=1.8, label="limit depth")
+    kinds = diagram.boundary_kind if len(diagram.boundary_kind) == len(n) else np.full(len(n), "hopf")
+    for kd in ("flip", "fold"):
+        if np.any(kinds == kd):
+            mark = (kinds == kd) | np.r_[kinds[1:] == kd, False] | np.r_[False, kinds[:-1] == kd]
+            ax.plot(n, np.where(mark, lim, np.nan), color=_KIND_STYLE[kd][0], lw=1.8,
+                    label=f"limit depth ({'period doubling' if kd == 'flip' else kd})")
+    placed: list[float] = []
+    span = n[-1] - n[0] if len(n) > 1 else 1.0
+    for c in sorted(diagram.lobes, key=lambda c: c.lobe):
+        d = 1e3 * c.limit_depth_m
+        if np.all(np.isnan(d)):
+            continue
+        i = int(np.nanargmin(d))
+        interior = 0 < i < len(d) - 1 or len(d) == 1
+        if d[i] <= top and interior and all(abs(c.speed_rpm[i] - x) > 0.03 * span for x in placed):
+            placed.append(c.speed_rpm[i])
+            ax.annotate(str(c.lobe), (c.speed_rpm[i], d[i]), textcoords="offset points", xytext=(0, -11),
+                        ha="center", fontsize="x-small", color="C3" if c.kind == "flip" else "k")
+    for s in simulations:
+        ax.plot([s.speed_rpm], [1e3 * s.depth_m], "o" if s.stable else "x", color="k" if s.stable else "C3",
+                mfc="none", ms=7)
+    ax.set_xlim(n[0], n[-1])
+    ax.set_ylim(0.0, top)
+    ax.set_xlabel("spindle speed [rpm]")
+    ax.set_ylabel("limit depth of cut [mm]")
+    ax.set_title(title or f"{diagram.process}\n{diagram.method.replace('_', ' ')}"
+                 + (" (FRF at every speed)" if diagram.frf_at_each_speed else ""), fontsize="medium")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="upper left", fontsize="small")
+    return fig
+
+
+def frf_figure(tool: ToolPointFrf | ToolPointModel, terms: Sequence[str] = ("xx", "yy"),
+               title: str | None = None) -> Figure:
+    """Real and imaginary parts (left) and magnitude and phase (right) of the chosen terms [m/N -> um/N]."""
+    frf = tool.frf() if isinstance(tool, ToolPointModel) else tool
+    fig = Figure(figsize=(10.0, 6.0), layout="constrained")
+    (a_re, a_mag), (a_im, a_ph) = fig.subplots(2, 2, sharex=True)
+    f = frf.frequency_hz
+    for t in terms:
+        i, j = DIRECTIONS.index(t[0]), DIRECTIONS.index(t[1])
+        h = 1e6 * frf.H[:, i, j]
+        if not np.any(h):
+            continue
+        a_re.plot(f, h.real, label=t)
+        a_im.plot(f, h.imag, label=t)
+        a_mag.semilogy(f, np.abs(h), label=t)
+        a_ph.plot(f, np.rad2deg(np.angle(h)), label=t)
+    a_re.set_ylabel("real [um/N]")
+    a_im.set_ylabel("imaginary [um/N]")
+    a_mag.set_ylabel("magnitude [um/N]")
+    a_ph.set_ylabel("phase [deg]")
+    a_ph.set_ylim(-180, 180)
+    a_ph.set_yticks([-180, -90, 0, 90, 180])
+    for a in (a_im, a_ph):
+        a.set_xlabel("frequency [Hz]")
+    for a in (a_re, a_im, a_mag, a_ph):
+        a.grid(True, alpha=0.3)
+    a_re.legend(fontsize="small")
+    fig.suptitle(title or f"tool-point FRF ({frf.source or 'unnamed'})", fontsize="medium")
+    return fig
+
+
+def stability_map_figure(diagram: LobeDiagram, title: str | None = None, rho_range: tuple[float, float] = (0.6, 1.4)
+                         ) -> Figure:
+    """Spectral radius of the monodromy matrix over speed x depth, the rho = 1 contour and the boundary."""
+    smap = diagram.stability_map
+    if smap is None:
+        raise ValueError(f"the {diagram.method} diagram has no stability map (semi-discretization only)")
+    fig = Figure(figsize=(9.0, 5.0), layout="constrained")
+    ax = fig.add_subplot()
+    d_mm = 1e3 * smap.depth_m
+    mesh = ax.pcolormesh(smap.speed_rpm, d_mm, smap.spectral_radius.T, shading="nearest", cmap="RdBu_r",
+                         vmin=rho_range[0], vmax=rho_range[1])
+    fig.colorbar(mesh, ax=ax).set_label("spectral radius of the monodromy matrix")
+    if len(smap.speed_rpm) > 1 and len(d_mm) > 1:
+        ax.contour(smap.speed_rpm, d_mm, smap.spectral_radius.T, levels=[1.0], colors="k", linewidths=0.8)
+    ax.plot(diagram.speed_rpm, 1e3 * diagram.limit_depth_m, "k.", ms=3, label="first crossing (refined)")
+    ax.set_xlabel("spindle speed [rpm]")
+    ax.set_ylabel("depth of cut [mm]")
+    ax.set_ylim(0.0, d_mm[-1])
+    ax.set_title(title or f"{diagram.process}\nsemi-discretization, order {smap.order}", fontsize="medium")
+    ax.legend(loc="upper left", fontsize="small")
+    return fig
+
+
+def simulation_figure(sim: SimulationResult, title: str | None = None, periods_shown: int = 30) -> Figure:
+    """Time history, spectrum (tooth-passing harmonics dotted, chatter frequency marked) and Poincare section."""
+    fig = Figure(figsize=(11.0, 7.0), layout="constrained")
+    gs = fig.add_gridspec(2, 2)
+    ax_t = fig.add_subplot(gs[0, :])
+    ax_f = fig.add_subplot(gs[1, 0])
+    ax_p = fig.add_subplot(gs[1, 1])
+    t_ms = 1e3 * sim.time_s
+    for i, d in enumerate(DIRECTIONS):
+        if np.any(sim.displacement_m[:, i]):
+            ax_t.plot(t_ms, 1e6 * sim.displacement_m[:, i], lw=0.6, label=d)
+    ax_t.set_xlabel("time [ms]")
+    ax_t.set_ylabel("displacement [um]")
+    ax_t.legend(fontsize="small", loc="upper right")
+    ax_t.grid(True, alpha=0.3)
+    ax_f.semilogy(sim.spectrum_frequency_hz, 1e6 * np.maximum(sim.spectrum_amplitude_m, 1e-30), lw=0.7)
+    fmax = sim.spectrum_frequency_hz[-1]
+    if np.isfinite(sim.chatter_frequency_hz):
+        ax_f.axvline(sim.chatter_frequency_hz, color="C3", lw=0.8, label=f"chatter {sim.chatter_frequency_hz:.1f} Hz")
+        fmax = min(fmax, 4 * sim.chatter_frequency_hz)
+    else:
+        fmax = min(fmax, 12 * sim.tooth_frequency_hz)
+    for k in range(1, int(fmax / sim.tooth_frequency_hz) + 1):
+        ax_f.axvline(k * sim.tooth_frequency_hz, color="0.6", lw=0.5, ls=":")
+    ax_f.set_xlim(0, fmax)
+    amp = sim.spectrum_amplitude_m[sim.spectrum_frequency_hz <= fmax]
+    if np.any(amp > 0):
+        ax_f.set_ylim(1e6 * amp.max() * 1e-5, 1e6 * amp.max() * 3)
+    ax_f.set_xlabel("frequency [Hz]")
+    ax_f.set_ylabel("amplitude [um]")
+    if np.isfinite(sim.chatter_frequency_hz):
+        ax_f.legend(fontsize="small", loc="upper right")
+    ax_f.grid(True, alpha=0.3)
+    m = sim.steps_per_period
+    tail = sim.displacement_m[-periods_shown * m:]
+    half = len(sim.poincare_m) // 2
+    active = [i for i in range(2) if np.any(sim.displacement_m[:, i])]
+    if len(active) == 1:  # one flexible direction: phase plane of that direction
+        i = active[0]
+        dt = sim.time_s[1] - sim.time_s[0]
+        px, py = 1e6 * tail[:, i], 1e3 * np.gradient(tail[:, i], dt)
+        qx, qy = 1e6 * sim.poincare_m[half:, i], 1e3 * sim.poincare_velocity_m_s[half:, i]
+        labels = (f"{DIRECTIONS[i]} [um]", f"d{DIRECTIONS[i]}/dt [mm/s]")
+    else:
+        px, py = 1e6 * tail[:, 0], 1e6 * tail[:, 1]
+        qx, qy = 1e6 * sim.poincare_m[half:, 0], 1e6 * sim.poincare_m[half:, 1]
+        labels = ("x [um]", "y [um]")
+    ax_p.plot(px, py, color="0.7", lw=0.5, label="trajectory")
+    ax_p.plot(qx, qy, ".", color="C3", ms=4, label="once per tooth period")
+    ax_p.set_xlabel(labels[0])
+    ax_p.set_ylabel(labels[1])
+    ax_p.legend(fontsize="small", loc="upper right")
+    ax_p.grid(True, alpha=0.3)
+    verdict = "stable" if sim.stable else "chatter"
+    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {verdict} "
+                 f"(growth per period {sim.growth_per_period:.4f})", fontsize="medium")
+    return fig

@@ -1,0 +1,123 @@
+"""Frozen results of the chatter analyses (SI: m, Hz, rpm for spindle speeds)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe_diagram_from_lobes"]
+
+
+@dataclass(frozen=True, eq=False)
+class LobeCurve:
+    """One stability lobe: ``lobe`` = number of whole chatter waves per tooth period.
+
+    ``kind`` is ``hopf`` (secondary Hopf, complex critical multiplier) or ``flip`` (period
+    doubling, multiplier -1).  NaN where the lobe has no boundary point at that speed.
+    """
+
+    lobe: int
+    speed_rpm: np.ndarray
+    limit_depth_m: np.ndarray
+    chatter_frequency_hz: np.ndarray
+    kind: str = "hopf"
+
+
+@dataclass(frozen=True, eq=False)
+class StabilityMap:
+    """Spectral radius of the monodromy matrix over a speed x depth grid (< 1 stable)."""
+
+    speed_rpm: np.ndarray  # [s]
+    depth_m: np.ndarray  # [d]
+    spectral_radius: np.ndarray  # [s, d]
+    steps_per_period: np.ndarray  # [s] semi-discretization steps per tooth period
+    order: int
+
+
+@dataclass(frozen=True, eq=False)
+class LobeDiagram:
+    """Limit depth of cut against spindle speed.
+
+    ``limit_depth_m`` is the lower envelope over the lobes (NaN: no instability found, e.g.
+    above the SD map's depth range), ``chatter_frequency_hz`` the frequency of the critical
+    lobe, ``boundary_kind`` its kind (``hopf``/``flip``/``""``).  ``stability_map`` is set by
+    the semi-discretization.
+    """
+
+    speed_rpm: np.ndarray
+    limit_depth_m: np.ndarray
+    chatter_frequency_hz: np.ndarray
+    lobes: tuple[LobeCurve, ...]
+    method: str
+    process: str
+    boundary_kind: np.ndarray = field(default_factory=lambda: np.array([], dtype="<U4"))
+    stability_map: StabilityMap | None = None
+    frf_at_each_speed: bool = False
+    notes: tuple[str, ...] = ()
+
+    def limit_at(self, speed_rpm: float | np.ndarray) -> np.ndarray:
+        """Limit depth interpolated linearly between the computed speeds."""
+        return np.interp(speed_rpm, self.speed_rpm, self.limit_depth_m)
+
+    def is_stable(self, speed_rpm: float, depth_m: float) -> bool:
+        lim = float(self.limit_at(speed_rpm))
+        return bool(np.isnan(lim) or depth_m < lim)
+
+    @property
+    def minimum(self) -> tuple[float, float]:
+        """(speed [rpm], depth [m]) of the smallest limit depth over the speed range."""
+        k = int(np.nanargmin(self.limit_depth_m))
+        return float(self.speed_rpm[k]), float(self.limit_depth_m[k])
+
+
+@dataclass(frozen=True, eq=False)
+class SimulationResult:
+    """Time-domain simulation at one speed and depth.
+
+    ``stable`` follows the Poincare criterion of :mod:`spindlesim.chatter.simulation`:
+    ``growth_per_period`` is the fitted ratio of successive Poincare distances (comparable to the
+    monodromy's spectral radius while the motion is linear), ``decay_ratio`` the last Poincare
+    distance over the largest one.
+    """
+
+    speed_rpm: float
+    depth_m: float
+    time_s: np.ndarray  # [k]
+    displacement_m: np.ndarray  # [k, 2]
+    force_N: np.ndarray  # [k, 2]
+    poincare_m: np.ndarray  # [p, 2] displacement once per tooth period
+    poincare_velocity_m_s: np.ndarray  # [p, 2]
+    spectrum_frequency_hz: np.ndarray
+    spectrum_amplitude_m: np.ndarray  # [f] amplitude of |(x, y)|
+    tooth_frequency_hz: float
+    chatter_frequency_hz: float  # NaN when stable
+    stable: bool
+    growth_per_period: float
+    decay_ratio: float
+    out_of_cut_fraction: float  # share of engaged edge-steps (static chip >= 10 % of max) out of cut, last half
+    steps_per_period: int
+    fft_bin_hz: float
+
+
+def lobe_diagram_from_lobes(speed_rpm: np.ndarray, depth: np.ndarray, freq: np.ndarray, lobe_numbers,
+                            method: str, process: str, frf_at_each_speed: bool,
+                            notes: tuple[str, ...] = ()) -> LobeDiagram:
+    """Envelope over per-lobe limits ``depth[k, s]`` (inf/NaN where a lobe has no point)."""
+    speed_rpm = np.asarray(speed_rpm, float)
+    depth = np.where(np.isfinite(depth), depth, np.nan)
+    lobes = tuple(LobeCurve(int(k), speed_rpm, depth[i], freq[i]) for i, k in enumerate(lobe_numbers)
+                  if np.any(np.isfinite(depth[i])))
+    if depth.shape[0] == 0 or np.all(np.isnan(depth)):
+        env = np.full(len(speed_rpm), np.nan)
+        fc = np.full(len(speed_rpm), np.nan)
+    else:
+        filled = np.where(np.isnan(depth), np.inf, depth)
+        kmin = np.argmin(filled, axis=0)
+        cols = np.arange(len(speed_rpm))
+        env = filled[kmin, cols]
+        fc = freq[kmin, cols]
+        none = ~np.isfinite(env)
+        env[none], fc[none] = np.nan, np.nan
+    kind = np.where(np.isnan(env), "", "hopf")
+    return LobeDiagram(speed_rpm, env, fc, lobes, method, process, kind, None, frf_at_each_speed, notes)

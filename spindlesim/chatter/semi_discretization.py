@@ -1,0 +1,223 @@
+"""Semi-discretization of the regenerative delay equation (Insperger and Stepan).
+
+Model, with the tool-point state-space model x' = A x + B F, y = C x and the linearised cutting
+force F = K(t) (y(t) - y(t - tau)) of :mod:`spindlesim.chatter.process` (depth included):
+
+    x'(t) = (A + B K(t) C) x(t) - B K(t) y(t - tau),     K(t + tau) = K(t).
+
+The period tau is cut into m steps dt = tau / m.  On [t_i, t_i+1] K(t) is replaced by its
+exact average K_i over the step and the delayed output by
+
+* zeroth order (Insperger and Stepan, IJNME 55 (2002) 503-518; updated form IJNME 61 (2004)
+  117-141, tau = m dt): y(t - tau) ~ (y_{i-m} + y_{i-m+1}) / 2;
+* first order (Insperger, Stepan and Turi, JSV 313 (2008) 334-341): the linear interpolation
+  y(t - tau) ~ (1 - s/dt) y_{i-m} + (s/dt) y_{i-m+1}, s = t - t_i;
+
+and the resulting ODE with constant coefficients is solved exactly:
+
+    x_{i+1} = P_i x_i + R0_i y_{i-m} + R1_i y_{i-m+1},
+    P_i = exp(A_i dt),  Phi0 = int_0^dt exp(A_i (dt - s)) ds,  Phi1 = int_0^dt exp(A_i (dt - s)) s/dt ds,
+    first order: R0 = (Phi0 - Phi1) D_i, R1 = Phi1 D_i;  zeroth order: R0 = R1 = Phi0 D_i / 2,
+    D_i = -B K_i,
+
+(P, Phi0, Phi1 from one exponential of a block matrix, Van Loan).  The state
+z_i = (x_i, y_{i-1}, ..., y_{i-m}) is mapped over one period by the monodromy (transition)
+matrix Phi = G_{m-1} ... G_0; the cut is asymptotically stable when its spectral radius is
+below one.  Output rows of C that are identically zero are dropped from the history (a tool
+flexible in one direction only keeps n + m states instead of n + 2 m).
+
+The critical multiplier mu gives the kind of the boundary (complex: secondary Hopf; -1: flip,
+period doubling) and the chatter frequencies (arg mu + 2 pi q) / tau; the dominant one is read
+from the eigenvector: the stored outputs over one period, demodulated by mu^(t/tau), are
+Fourier-analysed and the largest harmonic q is taken (Dombovari, Zatarain and Insperger).
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.sparse.linalg import ArpackNoConvergence, eigs
+
+from ._expm import expm_batch
+from .state_space import ToolPointModel
+
+__all__ = ["SdProblem", "CriticalMultiplier", "spectral_radius"]
+
+log = logging.getLogger(__name__)
+
+
+def _monodromy(P, R0, R1, Cr):
+    """Phi [E, N, N] from the step maps P [E, m, n, n], R0/R1 [E, m, n, r] and Cr [E, r, n].
+
+    The rows of x_i as linear functions of z_0 are carried through the m steps (batched over
+    E); history slot s of z holds y_{-s-1}."""
+    E, m, n, _ = P.shape
+    r = Cr.shape[1]
+    N = n + r * m
+    X = np.zeros((E, n, N))
+    X[:, :, :n] = np.eye(n)
+    Ys = np.empty((E, m, r, N))
+    for i in range(m):
+        Ys[:, i] = Cr @ X
+        Xn = P[:, i] @ X
+        s0 = m - i - 1  # y_{i-m}
+        Xn[:, :, n + r * s0:n + r * (s0 + 1)] += R0[:, i]
+        if i < m - 1:  # y_{i-m+1} still in the history
+            s1 = m - i - 2
+            Xn[:, :, n + r * s1:n + r * (s1 + 1)] += R1[:, i]
+        else:  # y_{i-m+1} = y_0 = Cr x_0
+            Xn += R1[:, i] @ Ys[:, 0]
+        X = Xn
+    out = np.empty((E, N, N))
+    out[:, :n] = X
+    out[:, n:] = Ys[:, ::-1].reshape(E, m * r, N)  # new slot s holds y_{m-1-s}
+    return out
+
+
+def _spectral_radii(Phi: np.ndarray) -> np.ndarray:
+    """Largest |eigenvalue| of each matrix: dense QR for small ones, Arnoldi (ARPACK, six
+    largest-magnitude eigenvalues, fixed start vector) above 64 states, dense on no convergence.
+    The dominant multipliers of the milling monodromy are well separated from the cluster near
+    zero, which Arnoldi resolves in a few tens of products."""
+    E, N, _ = Phi.shape
+    if N <= 64:
+        return np.abs(np.linalg.eigvals(Phi)).max(axis=-1)
+    out = np.empty(E)
+    v0 = np.ones(N)
+    for e in range(E):
+        try:
+            ev = eigs(Phi[e], k=6, which="LM", return_eigenvectors=False, tol=1e-12, v0=v0, maxiter=50 * N)
+            out[e] = np.abs(ev).max()
+        except ArpackNoConvergence:
+            out[e] = np.abs(np.linalg.eigvals(Phi[e])).max()
+    return out
+
+
+@dataclass(frozen=True)
+class CriticalMultiplier:
+    """Largest characteristic multiplier at one (speed, depth) and what it means."""
+
+    spectral_radius: float
+    multiplier: complex
+    kind: str  # "hopf", "flip" or "fold"
+    chatter_frequency_hz: float
+    lobe: int  # whole chatter waves per tooth period
+
+
+class SdProblem:
+    """Semi-discretized stability problem of one process over a set of speeds.
+
+    ``models[s]`` is the tool-point model at speed ``speeds_rpm[s]`` (all of the same order).
+    """
+
+    def __init__(self, process, models: list[ToolPointModel], speeds_rpm: np.ndarray,
+                 steps: int = 40, order: int = 1):
+        if order not in (0, 1):
+            raise ValueError("semi-discretization order must be 0 or 1")
+        if steps < 2:
+            raise ValueError("at least two steps per period")
+        self.process, self.steps, self.order = process, int(steps), int(order)
+        self.speeds = np.asarray(speeds_rpm, float)
+        self.tau = process.tooth_period_s(self.speeds)
+        n = models[0].A.shape[0]
+        if any(mdl.A.shape[0] != n for mdl in models):
+            raise ValueError("all tool models must have the same number of states")
+        rows = np.zeros(2, bool)
+        for mdl in models:
+            rows |= np.any(mdl.C != 0.0, axis=1)
+        self.U = np.eye(2)[:, rows]  # [2, r] outputs kept in the history
+        self.A = np.stack([mdl.A for mdl in models])
+        self.B = np.stack([mdl.B for mdl in models])
+        self.Cr = np.stack([mdl.C[rows] for mdl in models])
+        self.shared = len(models) == 1
+        self._K: dict[float, np.ndarray] = {}
+
+    def _model(self, s: np.ndarray):
+        idx = np.zeros_like(s) if self.shared else s
+        return self.A[idx], self.B[idx], self.Cr[idx]
+
+    def _directional(self, depth: float) -> np.ndarray:
+        key = float(depth)
+        if key not in self._K:
+            if len(self._K) > 4096:
+                self._K.clear()
+            self._K[key] = self.process.directional_steps(self.steps, key)
+        return self._K[key]
+
+    def monodromy(self, s_idx: np.ndarray, depth: np.ndarray) -> np.ndarray:
+        """Monodromy matrices [E, N, N] at speeds ``speeds[s_idx]`` and depths ``depth`` [m]."""
+        s_idx = np.atleast_1d(np.asarray(s_idx, np.int64))
+        depth = np.broadcast_to(np.asarray(depth, float), s_idx.shape)
+        m, n, r = self.steps, self.A.shape[1], self.U.shape[1]
+        A, B, Cr = self._model(s_idx)
+        K = np.stack([self._directional(d) for d in depth])  # [E, m, 2, 2]
+        dt = (self.tau[s_idx] / m)[:, None, None, None]
+        BK = np.einsum("eak,eikl->eial", B, K)  # [E, m, n, 2]
+        D = -BK @ self.U  # [E, m, n, r]
+        Ai = A[:, None] - D @ Cr[:, None]  # A + B K C, C = U Cr
+        # exp of [[A_i dt, D_i dt, 0], [0, 0, I_r], [0, 0, 0]] = [[P, Phi0 D, Phi1 D], ...] (Van Loan);
+        # steps out of cut (K_i = 0) share one exponential per evaluation
+        E = len(s_idx)
+        size = n + (2 if self.order == 1 else 1) * r
+        free = ~np.any(K != 0.0, axis=(2, 3))  # [E, m]
+        cut = ~free
+        Z = np.zeros((E, m, size, size))
+        Z[..., :n, :n] = Ai * dt
+        Z[..., :n, n:n + r] = D * dt
+        if self.order == 1:
+            Z[..., n:n + r, n + r:] = np.eye(r)
+        X = np.empty_like(Z)
+        X[cut] = expm_batch(Z[cut])
+        if free.any():
+            e_free = np.flatnonzero(free.any(axis=1))
+            first = free[e_free].argmax(axis=1)
+            Xf = expm_batch(Z[e_free, first])
+            X[free] = np.repeat(Xf, free[e_free].sum(axis=1), axis=0)
+        P, Phi0D = X[..., :n, :n], X[..., :n, n:n + r]
+        if self.order == 1:
+            Phi1D = X[..., :n, n + r:]
+            R0, R1 = Phi0D - Phi1D, Phi1D
+        else:
+            R0 = R1 = 0.5 * Phi0D
+        return _monodromy(P, R0, R1, Cr)
+
+    def spectral_radius(self, s_idx, depth) -> np.ndarray:
+        """Spectral radius at (speed index, depth) pairs, built in batches of bounded memory."""
+        s_idx = np.atleast_1d(np.asarray(s_idx, np.int64))
+        depth = np.broadcast_to(np.asarray(depth, float), s_idx.shape)
+        N = self.A.shape[1] + self.U.shape[1] * self.steps
+        chunk = int(np.clip(2e7 // (N * N), 1, 128))
+        out = np.empty(len(s_idx))
+        for a in range(0, len(s_idx), chunk):
+            out[a:a + chunk] = _spectral_radii(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]))
+        return out
+
+    def critical(self, s: int, depth: float) -> CriticalMultiplier:
+        """Critical multiplier, boundary kind and dominant chatter frequency at one point."""
+        Phi = self.monodromy(np.array([s]), np.array([depth]))[0]
+        mu_all, V = np.linalg.eig(Phi)
+        j = int(np.argmax(np.abs(mu_all)))
+        mu, v = complex(mu_all[j]), V[:, j]
+        if mu.imag < 0:  # the conjugate pair member with arg in [0, pi]
+            mu, v = mu.conjugate(), v.conj()
+        rho = abs(mu)
+        tol = 1e-9 * max(rho, 1e-300)
+        kind = "fold" if (abs(mu.imag) <= tol and mu.real > 0) else ("flip" if abs(mu.imag) <= tol else "hopf")
+        m, n, r, tau = self.steps, self.A.shape[1], self.U.shape[1], self.tau[s]
+        hist = v[n:].reshape(m, r)[::-1]  # y_{-m} ... y_{-1}: samples at t_j = (j - m) dt
+        t = (np.arange(m) - m) * (tau / m)
+        p = hist * np.exp(-np.log(mu) * t / tau)[:, None]
+        c = np.fft.fft(p, axis=0)  # harmonic q at (arg mu + 2 pi q) / tau
+        q = np.fft.fftfreq(m, 1.0 / m)
+        q_best = q[int(np.argmax(np.linalg.norm(c, axis=1)))]
+        f = abs(np.angle(mu) + 2 * np.pi * q_best) / (2 * np.pi * tau)
+        return CriticalMultiplier(rho, mu, kind, float(f), int(np.floor(f * tau + 1e-9)))
+
+
+def spectral_radius(process, model: ToolPointModel, speed_rpm: float, depth_m: float,
+                    steps: int = 40, order: int = 1) -> float:
+    """Spectral radius of the monodromy matrix at one speed [rpm] and depth [m]."""
+    prob = SdProblem(process, [model], np.array([speed_rpm]), steps, order)
+    return float(prob.spectral_radius(np.array([0]), np.array([depth_m]))[0])

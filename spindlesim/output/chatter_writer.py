@@ -1,0 +1,114 @@
+"""chatter.h5: the lobe diagram, the tool-point FRF it used, the simulations (docs/output-format.md).
+
+Dimensions: ``speed_rpm`` (a copy in every group that has it), ``mode`` (1-based), ``depth_m``,
+``frequency_hz``, ``time_s``, ``tooth_period``; string coordinates ``dof`` (x, y) and ``load``
+(Fx, Fy).  NaN marks an absent value (``_FillValue``) in the lobe limits and chatter frequencies (no
+boundary point at that speed) and in ``frf_per_speed`` (speeds with fewer significant modes).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .hdf5 import Data, RunInfo, labels, write_h5
+from .rotor_writers import tool_point_frf
+
+NO_BOUNDARY = "NaN where there is no stability boundary at that speed"
+
+
+def _frf(tool) -> tuple[np.ndarray, np.ndarray]:
+    from ..chatter.state_space import ToolPointModel
+
+    frf = tool.frf() if isinstance(tool, ToolPointModel) else tool
+    return frf.frequency_hz, frf.H
+
+
+def _limits(g: str, speed_rpm, limit_depth_m, chatter_frequency_hz) -> dict[str, Any]:
+    s = ("speed_rpm",)
+    return {f"{g}/speed_rpm": (np.asarray(speed_rpm, float), "rpm", s),
+            f"{g}/limit_depth_m": Data(limit_depth_m, "m", s, NO_BOUNDARY, fill_nan=True),
+            f"{g}/chatter_frequency_hz": Data(chatter_frequency_hz, "Hz", s, NO_BOUNDARY, fill_nan=True)}
+
+
+def _frf_per_speed(tool, speed_rpm: np.ndarray) -> dict[str, Any]:
+    """The dominant modes of the FRF at every speed (NaN pads speeds with fewer modes)."""
+    from ..chatter.state_space import ToolPointModel
+
+    modes = [[(m.frequency_hz, m.damping_ratio, m.peak_compliance_m_N) for m in t.significant_modes(rel=0.1)]
+             for t in tool if isinstance(t, ToolPointModel)]
+    if not modes:
+        return {}
+    width = max(len(m) for m in modes)
+    arr = np.full((len(modes), width, 3), np.nan)
+    for i, m in enumerate(modes):
+        arr[i, :len(m)] = m
+    g = "/chatter/frf_per_speed"
+    pad = "NaN where the speed has fewer significant modes"
+    data = {f"{g}/frequency_hz": Data(arr[:, :, 0], "Hz", ("speed_rpm", "mode"), pad, fill_nan=True),
+            f"{g}/damping_ratio": Data(arr[:, :, 1], "1", ("speed_rpm", "mode"), pad, fill_nan=True),
+            f"{g}/peak_compliance_m_N": Data(arr[:, :, 2], "m/N", ("speed_rpm", "mode"), pad, fill_nan=True)}
+    if len(modes) == len(speed_rpm):
+        data[f"{g}/speed_rpm"] = (np.asarray(speed_rpm, float), "rpm", ("speed_rpm",))
+    return data
+
+
+def _simulation(g: str, s) -> dict[str, Any]:
+    t, f = ("time_s",), ("spectrum_frequency_hz",)
+    return {f"{g}/time_s": (s.time_s, "s", t),
+            f"{g}/displacement_m": (s.displacement_m, "m", ("time_s", "dof")),
+            f"{g}/force_N": (s.force_N, "N", ("time_s", "load")),
+            f"{g}/poincare_m": Data(s.poincare_m, "m", ("tooth_period", "dof"), "displacement once per tooth period"),
+            f"{g}/spectrum_frequency_hz": (s.spectrum_frequency_hz, "Hz", f),
+            f"{g}/spectrum_amplitude_m": Data(s.spectrum_amplitude_m, "m", f, "amplitude of |(x, y)|"),
+            **labels(g, "dof", ("x", "y")), **labels(g, "load", ("Fx", "Fy"))}
+
+
+def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_tool, info: dict[str, Any]) -> Path:
+    dg = result.diagram
+    data: dict[str, Any] = _limits("/chatter", dg.speed_rpm, dg.limit_depth_m, dg.chatter_frequency_hz)
+    data["/chatter/boundary_kind"] = Data(np.asarray(dg.boundary_kind, dtype=object), "1", ("speed_rpm",),
+                                          "kind of the critical lobe (hopf, flip; empty: none)")
+    for c in dg.lobes:
+        data.update(_limits(f"/chatter/lobes/{c.kind}_{c.lobe}", c.speed_rpm, c.limit_depth_m, c.chatter_frequency_hz))
+    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
+    data.update(tool_point_frf("/chatter/frf", *_frf(shown)))
+    if isinstance(tool, list):
+        data.update(_frf_per_speed(tool, dg.speed_rpm))
+    if at_deck is not None:
+        data.update(_limits("/chatter/at_deck_speed", at_deck.speed_rpm, at_deck.limit_depth_m,
+                            at_deck.chatter_frequency_hz))
+    sm = dg.stability_map
+    if sm is not None:
+        g = "/chatter/stability_map"
+        data.update({f"{g}/speed_rpm": (sm.speed_rpm, "rpm", ("speed_rpm",)),
+                     f"{g}/depth_m": (sm.depth_m, "m", ("depth_m",)),
+                     f"{g}/spectral_radius": Data(sm.spectral_radius, "1", ("speed_rpm", "depth_m"),
+                                                  "of the monodromy matrix (< 1 stable)"),
+                     f"{g}/steps_per_period": (sm.steps_per_period, "1", ("speed_rpm",))})
+    for k, s in enumerate(result.simulations):
+        data.update(_simulation(f"/chatter/simulation/{k + 1}", s))
+    attrs: dict[str, dict[str, Any]] = {"/chatter": {
+        "operation": spec.process.operation if hasattr(spec.process, "operation") else dg.process,
+        "process": dg.process, "method": dg.method, "frf_source": info["frf_source"],
+        "frf_at_each_speed": bool(info.get("frf_at_each_speed", False)),
+        "notes": "; ".join(dg.notes)}}
+    for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
+        if key in info:
+            attrs["/chatter"][{"node": "tool_point_node"}.get(key, key)] = info[key]
+    if np.any(np.isfinite(dg.limit_depth_m)):
+        s_min, a_min = dg.minimum
+        attrs["/chatter"].update(minimum_limit_depth_m=a_min, minimum_at_speed_rpm=s_min)
+    attrs["/chatter/frf"] = {"layout": "[frequency, output (x, y), input (x, y)]"}
+    if info.get("deck_speed_rpm") is not None:
+        attrs["/chatter/frf"]["speed_rpm"] = info["deck_speed_rpm"]
+    for k, s in enumerate(result.simulations):
+        a = {"speed_rpm": s.speed_rpm, "depth_m": s.depth_m, "stable": s.stable,
+             "tooth_frequency_hz": s.tooth_frequency_hz, "growth_per_period": s.growth_per_period,
+             "fft_bin_hz": s.fft_bin_hz}
+        if np.isfinite(s.chatter_frequency_hz):  # NaN when stable: the attribute is left out
+            a["chatter_frequency_hz"] = s.chatter_frequency_hz
+        attrs[f"/chatter/simulation/{k + 1}"] = a
+    return write_h5(path, run, data, attrs)

@@ -1,0 +1,121 @@
+"""``spindlesim bearing``: one bearing (set) under a load -> bearing.h5 and PNGs.
+
+The deck's ``bearing:`` section (``type: ball``: displacement and 5x5 stiffness at the load and
+speed, ball loads, contact angles and pressures, ISO 281 / ISO/TS 16281 lives, sweeps over preload,
+load and speed), or a ``dtrb:`` section (the DTRB analysis, dtrb.h5).  Layout of bearing.h5
+(docs/output-format.md)::
+
+    /bearing/displacement (5: m, m, m, rad, rad), /bearing/stiffness (5x5, SI), /bearing/reaction (5)
+    /bearing/element_load_N [row, element] (outer contacts), /bearing/element_load_inner_N [row, element]
+    /bearing/contact_angle_inner_deg, /bearing/contact_angle_outer_deg [row, element]
+    /bearing/max_pressure_Pa [row, element] (the larger of inner and outer), .._inner_Pa, .._outer_Pa
+    /bearing/life_L10_Mrev (ISO 281), /bearing/life_L10r_Mrev (ISO/TS 16281)
+    /bearing/sweeps/<preload|load|speed>/...
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..output.hdf5 import DOF5_UNITS, LOAD5_UNITS, STIFFNESS5_UNITS, Data, five_dof, labels
+from .common import plots_wanted
+
+log = logging.getLogger(__name__)
+
+
+LIFE_NOTE = ("NaN where there is none: ISO 281 factors not tabulated for the contact angle, or no equivalent "
+             "load (unbounded life)")
+K_NOTE = "K[load, dof] = -dF/dq (N/m, N/rad, N m/m, N m/rad: see component_units)"
+
+
+def _life(v) -> np.ndarray:
+    """A rating life for the file: None (not applicable) and inf (no load) become the NaN fill."""
+    a = np.array(np.nan if v is None else v, dtype=float)
+    return np.where(np.isfinite(a), a, np.nan)
+
+
+def _state_datasets(base: str, st) -> dict:
+    re, rep = ("row", "element"), ("row", "element", "semi_axis")
+    return {
+        f"{base}/displacement": Data(st.displacement, "", ("dof",), "inner-ring displacement",
+                                     component_units=DOF5_UNITS),
+        f"{base}/reaction": Data(st.reaction, "", ("load",), "force on the shaft", component_units=LOAD5_UNITS),
+        f"{base}/load": Data(st.load, "", ("load",), "load on the bearing", component_units=LOAD5_UNITS),
+        f"{base}/stiffness": Data(st.stiffness, "", ("load", "dof"), K_NOTE, component_units=STIFFNESS5_UNITS),
+        f"{base}/element_load_N": Data(st.element_load_outer_N, "N", re, "outer-race contact load"),
+        f"{base}/element_load_inner_N": Data(st.element_load_inner_N, "N", re, "inner-race contact load"),
+        f"{base}/contact_angle_inner_deg": (st.contact_angle_inner_deg, "degree", re),
+        f"{base}/contact_angle_outer_deg": (st.contact_angle_outer_deg, "degree", re),
+        f"{base}/max_pressure_Pa": Data(np.maximum(st.max_pressure_inner_Pa, st.max_pressure_outer_Pa), "Pa", re,
+                                        "the larger of the inner and outer contacts"),
+        f"{base}/max_pressure_inner_Pa": (st.max_pressure_inner_Pa, "Pa", re),
+        f"{base}/max_pressure_outer_Pa": (st.max_pressure_outer_Pa, "Pa", re),
+        f"{base}/semi_axes_inner_m": Data(st.semi_axes_inner_m, "m", rep, "a across rolling, b along rolling"),
+        f"{base}/semi_axes_outer_m": Data(st.semi_axes_outer_m, "m", rep, "a across rolling, b along rolling"),
+        f"{base}/row_axial_load_N": (st.row_axial_load_N, "N", ("row",)),
+        f"{base}/centrifugal_force_N": (st.centrifugal_force_N, "N", re),
+        f"{base}/gyroscopic_moment_Nm": (st.gyroscopic_moment_Nm, "N m", re),
+        f"{base}/life_L10_Mrev": Data(_life(st.life_L10_iso281_Mrev), "megarevolution", (),
+                                      "ISO 281 basic rating life; " + LIFE_NOTE, fill_nan=True),
+        f"{base}/life_L10r_Mrev": Data(_life(st.life_L10r_iso16281_Mrev), "megarevolution", (),
+                                       "ISO/TS 16281 reference rating life; " + LIFE_NOTE, fill_nan=True),
+        **five_dof(base), **labels(base, "semi_axis", ("a", "b")),
+    }
+
+
+def _sweep_datasets(base: str, sw) -> dict:
+    unit = {"speed_rpm": "rpm", "fx_N": "N", "fy_N": "N", "fz_N": "N", "mx_Nm": "N m", "my_Nm": "N m"}
+    n = sw.name
+    return {
+        f"{base}/{n}": (sw.values, unit.get(n, "um" if n.endswith("_um") else "N"), (n,)),
+        f"{base}/stiffness": Data(sw.stiffness, "", (n, "load", "dof"), K_NOTE, component_units=STIFFNESS5_UNITS),
+        f"{base}/displacement": Data(sw.displacement, "", (n, "dof"), "inner-ring displacement",
+                                     component_units=DOF5_UNITS),
+        f"{base}/contact_angle_inner_deg": (sw.contact_angle_inner_deg, "degree", (n, "row", "element")),
+        f"{base}/contact_angle_outer_deg": (sw.contact_angle_outer_deg, "degree", (n, "row", "element")),
+        f"{base}/element_load_N": Data(sw.element_load_outer_N, "N", (n, "row", "element"), "outer-race contact load"),
+        f"{base}/row_axial_load_N": (sw.row_axial_load_N, "N", (n, "row")),
+        f"{base}/max_pressure_Pa": Data(np.maximum(sw.max_pressure_inner_Pa, sw.max_pressure_outer_Pa), "Pa",
+                                        (n, "row", "element"), "the larger of the inner and outer contacts"),
+        f"{base}/life_L10_Mrev": Data(_life(sw.life_L10_iso281_Mrev), "megarevolution", (n,),
+                                      "ISO 281 basic rating life; " + LIFE_NOTE, fill_nan=True),
+        f"{base}/life_L10r_Mrev": Data(_life(sw.life_L10r_iso16281_Mrev), "megarevolution", (n,),
+                                       "ISO/TS 16281 reference rating life; " + LIFE_NOTE, fill_nan=True),
+        **five_dof(base),
+    }
+
+
+def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = None) -> list[Path]:
+    d = loaded.deck
+    if d.bearing is None:
+        if d.dtrb is not None:
+            from .dtrb import run_dtrb
+
+            return run_dtrb(loaded, outdir, run_info, opts, progress)
+        raise ValueError("the deck has no 'bearing' section (type: ball) and no 'dtrb' section")
+    from ..bearings.ball.plots import figures
+    from ..bearings.ball.sweeps import run as run_ball
+    from ..output.figures import save_figure
+    from ..output.hdf5 import write_h5
+
+    res = run_ball(d.bearing)
+    st = res.state
+    data = _state_datasets("/bearing", st)
+    for key, sw in res.sweeps.items():
+        data.update(_sweep_datasets(f"/bearing/sweeps/{key}", sw))
+    g = res.bearing.geometry
+    attrs = {"/bearing": {"type": "ball", "name": res.bearing.name, "arrangement": g.arrangement, "rows": g.rows,
+                          "balls": g.balls, "speed_rpm": res.speed_rad_s * 30 / math.pi,
+                          "preload": res.bearing.preload.label(), "model": res.bearing.model,
+                          "operating_point": res.title()}}
+    paths = [write_h5(outdir / "bearing.h5", run_info, data, attrs)]
+    if plots_wanted(opts):
+        paths += [save_figure(fig, outdir / f"{name}.png") for name, fig in figures(res).items()]
+    log.info("bearing %s: K_xx %.4g N/um, K_zz %.4g N/um, L10 %s Mrev", res.bearing.name, st.stiffness[0, 0] / 1e6,
+             st.stiffness[2, 2] / 1e6, st.life_L10_iso281_Mrev)
+    return paths

@@ -1,0 +1,136 @@
+"""The ``chatter`` analysis: deck section ``chatter:`` -> stability lobes -> chatter.h5 and PNGs.
+
+Where the tool-point FRF comes from is the deck's choice (``chatter.frf``): the rotor of the deck
+(its tool tip, else node 1), modal parameters of a tap test, or measured FRF files.  From the rotor
+the FRF is taken at the deck speed, or recomputed at every speed of the diagram
+(``frf_at_each_speed``; by default whenever the bearings' coefficients change over the speed
+range); the lobes at the deck speed are then computed too and drawn on the same plot, so the
+effect of the speed-dependent modes is in view.  Options: ``simulate`` = [(speed rpm, depth mm),
+...] time-domain checks added to the deck's.
+"""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+log = logging.getLogger(__name__)
+
+COEFFICIENT_RTOL = 1e-3  # bearings whose coefficients change more over the speed range are speed-dependent
+
+
+def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
+    from ..chatter import build_chatter, run_chatter, stability_lobes
+    from ..chatter.section import ChatterSpec
+
+    d = loaded.deck
+    if d.chatter is None:
+        raise ValueError("the deck has no 'chatter' section (operation, cutting coefficients, speeds_rpm; "
+                         "see docs/deck-format.md)")
+    base = Path(loaded.source).parent if not loaded.source.startswith("<") else Path.cwd()
+    spec: ChatterSpec = build_chatter(d.chatter, base)
+    opts = options or {}
+    points = tuple(spec.simulation_points) + tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ())
+    info: dict[str, Any] = {"frf_source": spec.frf_source}
+    deck_tool = None
+    if spec.frf_source == "rotor":
+        tool, deck_tool, info = _rotor_tools(d, spec, bool(opts.get("exact")), progress)
+    else:
+        tool = spec.tool
+    timed = points or spec.resolved_method == "semi_discretization"
+    sim_tool = _for_simulation(tool) if timed else None
+    spec = ChatterSpec(spec.process, spec.speeds_rpm, spec.method, spec.frf_source, spec.tool,
+                       spec.frf_at_each_speed, spec.method_options, points, spec.simulation_options)
+    result = run_chatter(spec, tool, simulation_tool=sim_tool)
+    at_deck = None
+    if deck_tool is not None and info["frf_at_each_speed"]:
+        at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm, spec.method, **dict(spec.method_options))
+    return _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info)
+
+
+def _rotor_tools(d, spec, exact: bool, progress):
+    """(tool for the lobes, tool at the deck speed, provenance) from the deck's rotor."""
+    from ..analysis.tool_point import tool_point_model, tool_point_series
+    from ..model.build import build_rotor
+
+    rotor = build_rotor(d)
+    deck_rpm = float(d.operating.speed_rpm)
+    speeds = spec.speeds_rpm
+    per_speed = spec.frf_at_each_speed
+    reason = "deck"
+    if per_speed is None:
+        per_speed, reason = _speed_dependent(rotor, speeds), "bearing coefficients"
+    info = {"frf_source": "rotor", "frf_at_each_speed": bool(per_speed), "deck_speed_rpm": deck_rpm,
+            "frf_at_each_speed_reason": reason}
+    if rotor.tool_tip is None:
+        log.warning("the deck has no tool section: the cutting point is node 1")
+    if per_speed:
+        series = tool_point_series(rotor, speeds, exact=exact, progress=progress)
+        info.update(node=series.node, model=series.model)
+        deck_tool = tool_point_model(rotor, deck_rpm) if deck_rpm > 0 else series.models[0]
+        return list(series.models), deck_tool, info
+    if deck_rpm <= 0:
+        raise ValueError("chatter with the FRF at the deck speed needs operating.speed_rpm > 0 "
+                         "(or frf_at_each_speed: true)")
+    deck_tool = tool_point_model(rotor, deck_rpm)
+    info.update(node=(rotor.tool_tip + 1) if rotor.tool_tip is not None else 1, model="full state space")
+    return deck_tool, deck_tool, info
+
+
+def _speed_dependent(rotor, speeds) -> bool:
+    """Whether any bearing's stiffness or damping changes by more than COEFFICIENT_RTOL between the
+    first and the last speed of the diagram."""
+    from ..analysis.operating import operating_state
+
+    a, b = operating_state(rotor, float(speeds[0])), operating_state(rotor, float(speeds[-1]))
+    for (ka, ca), (kb, cb) in zip(a.coefficients, b.coefficients):
+        for x, y in ((ka, kb), (ca, cb)):
+            scale = max(float(np.max(np.abs(x))), float(np.max(np.abs(y))))
+            if scale > 0 and float(np.max(np.abs(x - y))) > COEFFICIENT_RTOL * scale:
+                return True
+    return False
+
+
+def _for_simulation(tool):
+    """A rotor model for the time-domain and semi-discretization methods: its modes up to three
+    times the highest mode with a tenth of the largest peak compliance (the stiff, lightly damped
+    modes far above would only shrink the time step)."""
+    from ..chatter.state_space import ToolPointModel
+
+    def cut(m):
+        if not isinstance(m, ToolPointModel) or m.A.shape[0] <= 16:
+            return m
+        top = max(s.frequency_hz for s in m.significant_modes(rel=0.1))
+        return m.truncated(3.0 * top)
+
+    if isinstance(tool, list):
+        return [cut(m) for m in tool]
+    return cut(tool)
+
+
+def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> list[Path]:
+    from ..chatter.plots import frf_figure, lobe_diagram_figure, simulation_figure, stability_map_figure
+    from ..chatter.state_space import ToolPointModel
+    from ..output.chatter_writer import write_chatter
+    from ..output.figures import save_figure
+
+    paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, tool, deck_tool, info)]
+    dg = result.diagram
+    fig = lobe_diagram_figure(dg, simulations=result.simulations)
+    if at_deck is not None:
+        ax = fig.axes[0]
+        ax.plot(at_deck.speed_rpm, 1e3 * at_deck.limit_depth_m, color="0.35", lw=1.1, ls="--",
+                label=f"FRF at the deck speed ({info['deck_speed_rpm']:g} rpm)")
+        ax.legend(loc="upper left", fontsize="small")
+    paths.append(save_figure(fig, outdir / "chatter_lobes.png"))
+    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
+    if shown is not None:
+        paths.append(save_figure(frf_figure(shown, terms=("xx", "yy", "xy")), outdir / "chatter_frf.png"))
+    if dg.stability_map is not None:
+        paths.append(save_figure(stability_map_figure(dg), outdir / "chatter_stability_map.png"))
+    for k, sim in enumerate(result.simulations):
+        paths.append(save_figure(simulation_figure(sim), outdir / f"chatter_simulation_{k + 1}.png"))
+    return paths
