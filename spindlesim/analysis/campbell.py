@@ -10,6 +10,7 @@ AF < 2.5 is critically damped and not a critical speed).
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import logging
 from typing import Callable
@@ -20,7 +21,7 @@ from scipy.optimize import linear_sum_assignment
 from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
 from .modal import modal_from_matrices
-from .operating import frozen_bearings, operating_state, system_matrices
+from .operating import RPM, operating_state, system_matrices
 from .reduced import checked_basis
 from .results import CampbellResult
 
@@ -43,8 +44,7 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     QR solution at every speed."""
     speeds = np.asarray(speeds_rpm, float)
     shaft = assemble_shaft(rotor)
-    system = None if frozen_rpm is None else frozen_bearings(rotor, frozen_rpm, shaft)
-    total = 2 * len(speeds) if system is None else len(speeds)
+    total = 2 * len(speeds) if frozen_rpm is None else len(speeds)
     done = [0]
 
     def tick():
@@ -53,10 +53,13 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
             progress(done[0], total)
 
     states, stopped = None, ""
-    if system is None:
+    if frozen_rpm is None:
         states, stopped = static_states(rotor, shaft, speeds, tick)
         speeds = speeds[: len(states)]
         total = 2 * len(speeds)
+    else:  # the bearings' state at frozen_rpm, the shaft (gyroscopics) at every speed
+        held = operating_state(rotor, frozen_rpm, shaft)
+        states = [dataclasses.replace(held, speed_rad_s=float(s) * RPM) for s in speeds]
     n_track = n_modes
     extra = max(4, n_modes // 2)  # spare modes so a mode leaving the window can be replaced
     freq = np.full((len(speeds), n_track), np.nan)
@@ -65,7 +68,7 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     whirl = np.full(freq.shape, "", dtype=object)
     prev_shapes = None
     prev_freq = None
-    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + extra, states, system, exact, n_check=n_modes)
+    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + extra, states, exact, n_check=n_modes)
     for i, (s, m) in enumerate(zip(speeds, modal)):
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
         if prev_shapes is None:
@@ -119,7 +122,7 @@ def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], No
 API684_MIN_AF = 2.5
 
 
-def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, states=None, system=None,
+def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, states,
                      exact: bool = False, n_check: int | None = None):
     """(description of the model used, iterator over the modal results at every speed).  The speeds
     are solved on all cores (LAPACK releases the GIL; each thread uses single-threaded BLAS) and
@@ -128,16 +131,13 @@ def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, stat
     from concurrent.futures import ThreadPoolExecutor
 
     expand, model = None, "full state space"
-    if system is None:  # the static state of each speed (static_states)
-        basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check)
-        if basis is None:
-            matrices = [functools.partial(system_matrices, rotor, state=st) for st in states]
-        else:
-            matrices = [functools.partial(basis.system, st) for st in states]
-            expand = basis.T
-            model = f"reduced: {basis.size} of {shaft.M.shape[0]} coordinates"
+    basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check)
+    if basis is None:
+        matrices = [functools.partial(system_matrices, rotor, state=st) for st in states]
     else:
-        matrices = [functools.partial(system, s) for s in speeds]
+        matrices = [functools.partial(basis.system, st) for st in states]
+        expand = basis.T
+        model = f"reduced: {basis.size} of {shaft.M.shape[0]} coordinates"
 
     def one(k: int):
         return modal_from_matrices(matrices[k](), rotor.dofs, rotor.node_z_m, n_modes, speeds[k], expand)

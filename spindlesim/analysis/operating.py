@@ -273,25 +273,6 @@ def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_d
         f"(largest at DOF {int(np.argmax(np.abs(R)))})")
 
 
-def frozen_bearings(rotor: Rotor, speed_rpm: float, shaft: ShaftMatrices | None = None):
-    """speed [rpm] -> SystemMatrices with the bearings' K and C held at their values at ``speed_rpm``
-    (and its static state) and the shaft at the given speed: what a Campbell diagram with speed-
-    independent bearing coefficients computes, the reference for the effect of speed on them."""
-    st = operating_state(rotor, speed_rpm, shaft)
-    coef = st.coefficients
-
-    def at(speed: float) -> SystemMatrices:
-        W = speed * RPM
-        K = st.shaft.stiffness(W).copy()
-        C = st.shaft.damping(W).copy()
-        for (kb, cb), i in zip(coef, st.bearing_index):
-            K[np.ix_(i, i)] += kb
-            C[np.ix_(i, i)] += cb
-        return SystemMatrices(M=st.shaft.M, C=C, K=K, speed_rad_s=W)
-
-    return at
-
-
 def _force_scale(load_scale: float, forces) -> float:
     """The largest force in the balance (loads and bearing forces): the residual's round-off scale."""
     return max(load_scale, max((float(np.max(np.abs(fb))) for fb in forces if fb.size), default=0.0))

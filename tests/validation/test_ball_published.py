@@ -20,7 +20,7 @@
    The minus sign of w_R (the ball spins against the turning inner ring) makes M_g negative, so the
    printed friction term puts the force on the ball at the outer contact along (-cos a_o, +sin a_o)
    (axially against the row's thrust, radially outward): the sense of Euler's equation, which the
-   model uses with M_g counted positive (theory.md, "Gyroscopic moment: direction").  Read with
+   model uses with M_g counted positive (docs/theory.md, "Ball bearings").  Read with
    |w_R| (M_g > 0) the same printed equations reverse the couple; that reading is reproduced by the
    model with its friction couple negated.  The equations above were checked against Harris' text as
    transcribed in an independent open implementation of the book (OpenJones, S. Sudhof 2015: the
@@ -29,7 +29,7 @@
    22,250 N thrust, 10,000 and 20,000 rpm.  Hand calculation and model solve the same equations, so
    they must agree to solver precision (1e-8 relative).  No table of the book's high-speed results
    was available to this test; our results for the case (three readings of the couple) are pinned as
-   a regression and listed in theory.md for comparison with the book's plots.
+   a regression and listed in docs/theory.md ("Ball bearings") for comparison with the book's plots.
 
 2. SKF (super-precision angular contact ball bearings, "Effect of rotational speed on preload"):
    strain-gauge measurements show the preload of a set rising markedly at very high speeds, "mainly
@@ -235,7 +235,7 @@ def test_friction_force_turns_the_angular_momentum_with_the_cage():
 
 
 def test_axial_stiffness_of_the_position_preloaded_pair_falls_then_rises():
-    """Model behaviour documented in theory.md ("Speed effects under position preload"): K_zz falls from
+    """Model behaviour documented in docs/theory.md ("Ball bearings"): K_zz falls from
     77.4 N/um at rest to a minimum of about 56 N/um near 7,500 rpm (Hertz contacts in series turning into
     a ball that rolls along the outer groove as the contact angles split), then rises to 96.9 N/um at
     20,000 rpm with the induced preload and the centrifugal load on the outer contacts.  With a constant

@@ -1,4 +1,4 @@
-"""The reduced (Craig-Bampton) Campbell model against the full state-space QR solution.
+"""The reduced Campbell model (modes on nominal supports plus static correction modes) against the full state-space QR solution.
 
 Issue 15 asks that the faster Campbell diagram's tracked frequencies equal the full solution to
 1e-4 relative and its damping ratios to 1e-3 absolute, on the seed 003 spindle, Friswell's
@@ -112,7 +112,7 @@ def _distinct(freq: np.ndarray, rtol: float = 1e-4) -> np.ndarray:
 
 
 def test_bearing_coefficients_enter_exactly_in_statics():
-    """Craig-Bampton keeps the static response to loads at the interface exact: the reduced
+    """The static correction modes keep the static response to loads at the interface exact: the reduced
     stiffness's flexibility at the bearing DOFs equals the full model's."""
     rotor = _seed003()
     shaft = assemble_shaft(rotor)

@@ -13,7 +13,7 @@ exact 5x5 tangent; ISO 281 and ISO/TS 16281 lives.
 - ``bearing``: :class:`BallBearing` (the bearing contract, equilibrium, states).
 - ``rating``: ISO 281 load rating and life, ISO/TS 16281 reference rating life.
 - ``results``, ``sweeps``, ``plots``: records, sweeps over preload, load and speed, figures.
-- ``theory.md``: the equations, sign conventions and choices, with sources.
+- docs/theory.md, "Ball bearings": the equations, sign conventions and choices, with sources.
 
 The embedded default deck of ``spindlesim bearing`` (a 7014C-size DB pair) is
 ``spindlesim/decks/bearing.yaml``.

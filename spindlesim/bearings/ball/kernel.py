@@ -15,7 +15,7 @@ Forces on the ball (t = (cos a, -sin a) is the in-plane tangent of a contact):
 - gyroscopic moment M_g = J w_R w_c sin(beta) (Jones 1960), the torque the contacts must apply
   so that the spin axis precesses with the cage: T = w_c e_z x (J w_ball) lies along the
   orbit tangent; in the (a, r) plane the friction couple (D/2)(c_i - c_o) equals +M_g for either
-  row direction (derivation in docs: theory.md of this package, "Gyroscopic moment: direction").
+  row direction (derivation: docs/theory.md, "Ball bearings").
   M_g here is a size (> 0); Harris and Kotzalas' printed balance has the opposite signs on the
   friction terms and a signed, negative w_R, which is the same force: do not combine their signs
   with a positive M_g (tests/validation/test_ball_published.py);

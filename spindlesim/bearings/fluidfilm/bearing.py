@@ -124,13 +124,18 @@ class FluidFilmBearing(BearingBase):
                                    viscosity_Pa_s=None, film_method="reynolds", force_offset_N=(0.0, 0.0),
                                    journal_offset_m=None)
 
-    def journal_offset(self, speed: float) -> np.ndarray:
-        """e_0: the journal position carrying ``load_N`` alone (zero without ``load_N``)."""
+    def journal_offset(self, speed: float, viscosity_Pa_s: float | None = None) -> np.ndarray:
+        """e_0: the journal position carrying ``load_N`` alone at the film's viscosity of the operating
+        point (``viscosity_Pa_s``; by default that of ``load_N`` alone), zero without ``load_N``.
+        Any fixed reference would do (the static, modal and transient analyses all measure from it);
+        this one makes the rotor's static deflection at the bearing the part its own loads cause."""
         if self.load_N is None:
             return np.zeros(2)
         if self.journal_offset_m is not None:
             return np.asarray(self.journal_offset_m, float)
-        return self.free().analyze(speed).film.position_m.copy()
+        free = self.free()
+        mu = free.analyze(speed).film.viscosity_Pa_s if viscosity_Pa_s is None else viscosity_Pa_s
+        return _offset_cached(free, float(speed), float(mu)).copy()
 
     def linearized(self, speed: float, static_load: np.ndarray | None = None):
         """(K [2x2] N/m, C [2x2] N s/m) in the x, y frame at the thermal equilibrium."""
@@ -139,7 +144,8 @@ class FluidFilmBearing(BearingBase):
 
     def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
         """The journal position of the thermal equilibrium at (speed, load), from ``journal_offset``."""
-        return self.analyze(speed, static_load).film.position_m - self.journal_offset(speed)
+        film = self.analyze(speed, static_load).film
+        return film.position_m - self.journal_offset(speed, film.viscosity_Pa_s)
 
     def at_operating_point(self, speed: float, static_load: np.ndarray | None = None,
                            transient: bool = False) -> "FluidFilmBearing":
@@ -148,7 +154,7 @@ class FluidFilmBearing(BearingBase):
         integration with the deck's ``transient_film`` force model."""
         free = self.free()
         film = free.analyze(speed, static_load).film
-        offset = tuple(float(v) for v in free.journal_offset(speed)) if self.load_N is not None else None
+        offset = tuple(float(v) for v in free.journal_offset(speed, film.viscosity_Pa_s)) if self.load_N is not None else None
         free = dataclasses.replace(free, journal_offset_m=offset)
         geo, base = free.geometry, None
         if geo.axisymmetric and not geo.lands[0].periodic:  # feed max_film: the film start stays put
@@ -186,6 +192,26 @@ class FluidFilmBearing(BearingBase):
 
 
 @functools.lru_cache(maxsize=256)
+def _offset_cached(bearing: FluidFilmBearing, speed_rad_s: float, viscosity_Pa_s: float) -> np.ndarray:
+    """The isoviscous journal position carrying ``load_N`` alone (``journal_offset``)."""
+    from .performance import equilibrium
+
+    eq = equilibrium(bearing.solver, viscosity_Pa_s, speed_rad_s, np.array([0.0, -float(bearing.load_N)]))
+    return np.array([eq.X, eq.Y]) * bearing.geometry.clearance_m
+
+
+#: the last thermal equilibrium of each bearing: the start of its next one (a neighbouring speed)
+_NEAR: dict[FluidFilmBearing, ThermalResult] = {}
+
+
+@functools.lru_cache(maxsize=256)
 def _analyze_cached(bearing: FluidFilmBearing, speed_rad_s: float, wx: float, wy: float) -> ThermalResult:
-    """Static, modal, FRF and Campbell ask for the same operating points: solve each once."""
-    return solve_thermal(bearing.solver, bearing.viscosity, speed_rad_s, np.array([wx, wy]), bearing.thermal)
+    """Static, modal, FRF and Campbell ask for the same operating points: solve each once, each
+    started from the bearing's previous equilibrium (a Campbell diagram's neighbouring speed; the
+    result does not depend on the start, :func:`solve_thermal`)."""
+    res = solve_thermal(bearing.solver, bearing.viscosity, speed_rad_s, np.array([wx, wy]), bearing.thermal,
+                        near=_NEAR.get(bearing))
+    if len(_NEAR) > 64:
+        _NEAR.clear()
+    _NEAR[bearing] = res
+    return res

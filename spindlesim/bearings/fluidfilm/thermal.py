@@ -112,26 +112,36 @@ def _balance(p: ThermalParameters, aA: float, film: FilmResult):
 
 
 def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N: np.ndarray,
-                  params: ThermalParameters, xtol: float = 1e-4) -> ThermalResult:
+                  params: ThermalParameters, xtol: float = 1e-6,
+                  near: ThermalResult | None = None) -> ThermalResult:
     """Thermal equilibrium and the operating point at it.
 
     ``viscosity`` is a callable temperature [degC] -> Pa s (:mod:`viscosity`); a
     :class:`ConstantViscosity` gives an isoviscous film whose temperatures follow from
-    eq. 12 without feedback.
+    eq. 12 without feedback.  ``near`` is the equilibrium of a neighbouring state (the previous
+    speed of a Campbell diagram): its temperature brackets the root in two or three film solutions
+    and its journal position and film start the first one.  The root is found to ``xtol`` degC
+    either way (1e-6 degC: the result does not depend on where the search started).
     """
     geo = solver.geometry
     aA = params.conductance(geo)
     load = np.asarray(load_N, dtype=float)
     rho = params.density_kg_m3
     state = {"pos": None, "set": None, "n": 0}
+    done: dict[float, FilmResult] = {}  # brentq asks again for the ends of its bracket
+    if near is not None:
+        state["pos"], state["set"] = near.film.position_m, near.film.full_film
 
     def film_at(theta: float) -> FilmResult:
+        if theta in done:
+            return done[theta]
         mu = viscosity(theta)
         init = None if state["pos"] is None else state["pos"] / geo.clearance_m
         f = operating_point(solver, mu, speed_rad_s, load, rho, initial=init,
                             full_film_guess=state["set"])
         state["pos"], state["set"] = f.position_m, f.full_film
         state["n"] += 1
+        done[theta] = f
         return f
 
     if isinstance(viscosity, ConstantViscosity):
@@ -143,6 +153,10 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     def g(theta: float) -> float:
         return _balance(params, aA, film_at(theta))[0] - theta
 
+    bracket = None if near is None else _near_bracket(g, near.temperature_mean_C)
+    if bracket is not None:
+        theta = bracket[0] if bracket[0] == bracket[1] else brentq(g, *bracket, xtol=xtol, rtol=1e-12)
+        return _result(params, aA, film_at(theta), state["n"])
     lo = min(params.inlet_C, params.ambient_C)
     try:
         glo = g(lo)
@@ -180,9 +194,32 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
         if ghi > 0:
             lo, glo = hi, ghi
             step *= 2.0
-    theta = brentq(g, lo, hi, xtol=xtol, rtol=1e-10)
-    film = film_at(theta)
+    theta = brentq(g, lo, hi, xtol=xtol, rtol=1e-12)
+    return _result(params, aA, film_at(theta), state["n"])
+
+
+def _result(params: ThermalParameters, aA: float, film: FilmResult, n: int) -> ThermalResult:
     th, tho, H, H1, H2, q = _balance(params, aA, film)
-    log.debug("thermal equilibrium %.4f degC after %d film solutions", th, state["n"])
-    return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA,
-                         False, state["n"], film)
+    log.debug("thermal equilibrium %.6f degC after %d film solutions", th, n)
+    return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA, False, n, film)
+
+
+def _near_bracket(g, theta0: float, tries: int = 4):
+    """A sign change of g near ``theta0`` (a neighbour's equilibrium), or None (then the cold search
+    from the inlet temperature runs).  g falls with slope about -1 (the balance temperature moves
+    less than the trial one), so theta0 + g(theta0) is the first guess of the root."""
+    try:
+        g0 = g(theta0)
+        if g0 == 0.0:
+            return theta0, theta0
+        step = g0 + math.copysign(0.05 + 0.1 * abs(g0), g0)
+        a, ga = theta0, g0
+        for _ in range(tries):
+            b = min(max(a + step, -50.0), MAX_TEMPERATURE_C)
+            gb = g(b)
+            if ga * gb <= 0:
+                return (a, b) if a < b else (b, a)
+            a, ga, step = b, gb, 2.0 * step
+    except (EquilibriumError, ReynoldsError):
+        return None
+    return None

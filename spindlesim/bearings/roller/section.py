@@ -15,11 +15,15 @@ carries its unit; :func:`build` is the one place where they become SI.  Defaults
 bearing (Table 1) with the shaft mass of Harsha and Kankar (2004); see
 ``spindlesim/decks/transient.yaml`` for the source of every number.
 
-Contact stiffness: by default Palmgren's line-contact law for ONE roller/raceway contact
-(``contact.hertz.palmgren_stiffness``); the rigid-race model puts the inner and outer contacts
-in series (K / 2^(10/9)), the flexible-race model has them as separate contacts.  A given
-``contact_stiffness_N_per_m_n`` is the constant of the two contacts in series (as Harsha and
-Kankar quote 7.055e9 N/m^1.5 for their ball bearing).
+Contact stiffness: ``contact_stiffness_N_per_m_n`` is the constant K of Q = K delta^n of a
+rolling element's two contacts in series (as Harsha and Kankar quote 7.055e9 N/m^1.5 for their
+ball bearing); the rigid-race model uses it as it is, the flexible-race model splits it into two
+equal contacts (K 2^n each).  Without it, a roller takes Palmgren's line-contact constant
+(``contact.hertz.palmgren_stiffness``) AS that in-series constant.  Palmgren's law is usually read
+as one roller/raceway contact, which would make the in-series constant K / 2^(10/9): the default
+is then 2.16 times stiffer than that reading.  It is kept because every roller deck and its
+validation (seed 000's natural frequencies and roller-pass lines) were set on it; give
+``contact_stiffness_N_per_m_n`` to choose.
 """
 
 from __future__ import annotations
@@ -154,7 +158,7 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
         K_total, n = float(e.contact_stiffness_N_per_m_n), EXPONENT_POINT
     else:
         n = EXPONENT_LINE
-        # Palmgren's law as the constant of the element's two contacts (see the module note)
+        # Palmgren's law taken as the constant of the element's two contacts in series (module note)
         K_total = float(e.contact_stiffness_N_per_m_n or palmgren_stiffness(e.width_mm * 1e-3))
     r_out_mm = 0.5 * e.outer_raceway_diameter_mm + e.radial_clearance_mm  # clearance enlarges the outer raceway
     if e.model == "rigid_race":

@@ -1,0 +1,113 @@
+"""The package layers import one way (issue "One spindle model", item: layers that flow one way).
+
+Data flows deck -> model -> fe -> bearings -> analysis -> runs (files, plots) -> CLI.  As imports that
+is the ranking below: a package may import only packages of a lower rank, so no cycle can form and
+the physics (fe, bearings, analysis) never depends on how a deck is written or on files and plots.
+The test parses every module's imports (no import is executed) and names each offending line.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+import spindlesim
+
+ROOT = Path(spindlesim.__file__).parent
+
+#: rank of each top-level package or module; imports must go to a strictly lower rank
+RANK = {
+    "__init__": 0, "fields": 0,
+    "contact": 1,
+    "bearings": 2, "chatter": 2,
+    "deck": 3, "model": 3,
+    "fe": 4,
+    "analysis": 5,
+    "output": 6,
+    "runs": 7,
+    "sweep": 8,
+    "commands": 9,
+    "cli": 10,
+    "__main__": 11,
+    "decks": 0,  # data files only
+}
+
+
+def _package(module: str) -> str:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else "__init__"
+
+
+def _member(base: list[str], name: str) -> str:
+    """``from <base> import name``: the submodule when ``name`` is one, else the package itself."""
+    folder = ROOT.parent.joinpath(*base)
+    is_module = (folder / f"{name}.py").exists() or (folder / name / "__init__.py").exists()
+    return ".".join(base + [name]) if is_module else ".".join(base)
+
+
+def _imports(path: Path) -> list[tuple[int, str]]:
+    rel = path.relative_to(ROOT.parent).with_suffix("")
+    module = ".".join(rel.parts)
+    package_parts = module.split(".") if path.name == "__init__.py" else module.split(".")[:-1]
+    if path.name == "__init__.py":
+        package_parts = package_parts[:-1]
+    out = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package_parts[:len(package_parts) - (node.level - 1)]
+                names = [".".join(base + [node.module])] if node.module else [_member(base, a.name) for a in node.names]
+            else:
+                names = [node.module] if node.module and node.module.split(".")[0] == "spindlesim" else []
+        elif isinstance(node, ast.Import):
+            names = [a.name for a in node.names if a.name.split(".")[0] == "spindlesim"]
+        else:
+            continue
+        out += [(node.lineno, n) for n in names]
+    return out
+
+
+def _modules():
+    for path in sorted(ROOT.rglob("*.py")):
+        rel = path.relative_to(ROOT)
+        own = rel.parts[0] if len(rel.parts) > 1 else rel.stem
+        yield path, own
+
+
+def test_every_package_has_a_rank():
+    owners = {own for _, own in _modules()}
+    assert owners <= set(RANK), f"packages without a layer: {sorted(owners - set(RANK))}"
+
+
+def test_imports_go_down_the_layers():
+    bad = []
+    for path, own in _modules():
+        for line, target in _imports(path):
+            dest = _package(target)
+            if dest == own:
+                continue
+            if dest not in RANK or RANK[dest] >= RANK[own]:
+                bad.append(f"{path.relative_to(ROOT.parent)}:{line}: {own} imports {target}")
+    assert not bad, "imports against the layers:\n" + "\n".join(bad)
+
+
+def test_the_check_sees_a_violation(tmp_path):
+    """The parser finds relative and absolute imports (so the test above can fail)."""
+    pkg = ROOT / "analysis"
+    probe = pkg / "campbell.py"
+    found = {t for _, t in _imports(probe)}
+    assert any(_package(t) == "fe" for t in found) and any(_package(t) == "model" for t in found)
+
+
+#: what the analyses must not do: ask a bearing what it is (the contract is all they may use)
+PROBES = re.compile(r"hasattr\(\s*b\w*\s*,|getattr\(\s*b\w*\s*,\s*\"(?!name)|\.type\s+(==|in)\s|isinstance\(\s*b\w*\s*,")
+
+
+def test_analyses_never_ask_a_bearing_what_it_is():
+    bad = []
+    for path in sorted((ROOT / "analysis").rglob("*.py")):
+        for i, text in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            if PROBES.search(text) and "noqa: contract" not in text:
+                bad.append(f"{path.relative_to(ROOT.parent)}:{i}: {text.strip()}")
+    assert not bad, "analyses probing bearing types or attributes:\n" + "\n".join(bad)
