@@ -1,7 +1,11 @@
-"""The output contract of every HDF5 file (docs/output-format.md): xarray opens every group with
-coordinates, units are UDUNITS strings, no NaN/Inf unless declared as fill, provenance, file modes."""
+"""The output contract of every command's files (docs/output-format.md), on one run of each command's
+default deck: xarray opens every group with coordinates, every dataset's dimensions are HDF5 dimension
+scales, units are UDUNITS strings from one vocabulary, no NaN/Inf unless declared as fill, provenance,
+file modes under umask 022, and a non-finite result ends a command with exit 1 and no file.
 
-import logging
+The writer itself (refusals, atomic writes, complex storage) is tested in test_hdf5_contract.py."""
+
+import dataclasses
 import os
 import stat
 
@@ -9,7 +13,7 @@ import h5py
 import numpy as np
 import pytest
 
-from spindlesim.output.hdf5 import Data, RunInfo, labels, write_h5
+from spindlesim.output.hdf5 import RunInfo
 
 xr = pytest.importorskip("xarray")
 pytest.importorskip("h5netcdf")
@@ -37,14 +41,14 @@ chatter:
 #: analysis -> (deck, options, text appended to the deck)
 CASES = {
     "static": ("spindle_linear", {}, ""),
-    "modal": ("spindle_linear", {"plots": False}, ""),
-    "campbell": ("spindle_linear", {"speeds_rpm": [0.0, 6000.0, 12000.0], "plots": False}, ""),
-    "frf": ("spindle_linear", {"plots": False}, ""),
-    "unbalance": ("spindle_linear", {"plots": False}, ""),
+    "modal": ("spindle_linear", {}, ""),
+    "campbell": ("spindle_linear", {"speeds_rpm": [0.0, 6000.0, 12000.0]}, ""),
+    "frf": ("spindle_linear", {}, ""),
+    "unbalance": ("spindle_linear", {}, ""),
     "thermal": ("spindle", {}, ""),
     "coefficients": ("spindle", {}, ""),
-    "transient": ("transient", {"duration_s": 0.03, "plots": False}, ""),
-    "bearing": ("bearing", {"plots": False}, ""),
+    "transient": ("transient", {"duration_s": 0.03}, ""),
+    "bearing": ("bearing", {}, ""),
     "dtrb": ("dtrb", {}, ""),
     "contact": ("contact", {"nx": 24, "ny": 48}, ""),
     "chatter": ("spindle_linear", {"simulate": [(8000.0, 0.5)]}, CHATTER),
@@ -107,36 +111,55 @@ def _groups(path):
     return out
 
 
-def _datasets(path):
-    out = {}
-    with h5py.File(path, "r") as f:
-        f.visititems(lambda n, o: out.update({n: (o[()], dict(o.attrs))}) if isinstance(o, h5py.Dataset) else None)
-    return out
+def _text(v):
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_file_modes_under_umask_022(outputs, name):
+    """Every .h5 and .png the command wrote (all files in its folder, returned or not) is 0644 under
+    umask 022, and no temporary file is left."""
+    path, paths = outputs(name)
+    written = sorted(p for p in path.parent.iterdir())
+    assert sorted(paths) == written
+    assert {p.suffix for p in written} == {".h5", ".png"}, written  # each case draws its figures
+    for p in written:
+        assert stat.S_IMODE(os.stat(p).st_mode) == 0o644, p
 
 
 @pytest.mark.parametrize("name", list(CASES))
 def test_file_contract(outputs, name):
-    path, paths = outputs(name)
-    for p in paths:  # written under umask 022: readable by everyone, like any file the user creates
-        assert stat.S_IMODE(os.stat(p).st_mode) == 0o644, p
-    assert not list(path.parent.glob("*.tmp*"))
+    """Provenance root attributes; every dataset: units from UNITS (or "" with component_units from
+    UNITS), no Inf, NaN only with _FillValue NaN; every non-scalar dataset is a dimension scale or
+    has a scale attached to each axis; xarray opens every group with a coordinate for every dimension."""
+    path, _ = outputs(name)
     with h5py.File(path, "r") as f:
         for key in PROVENANCE:
             assert key in f.attrs, key
-        assert str(f.attrs["created_utc"]).endswith("+00:00")
-    for ds_name, (value, attrs) in _datasets(path).items():
-        units = attrs["units"]
-        units = units.decode() if isinstance(units, bytes) else str(units)
-        if units == "":
-            comp = np.asarray(attrs["component_units"]).astype(str)
-            assert set(comp.ravel()) <= UNITS, (ds_name, comp)
-        else:
-            assert units in UNITS, (ds_name, units)
-        v = np.asarray(value)
-        if v.dtype.kind in "fc":
-            assert not np.isinf(v).any(), ds_name
-            if np.isnan(v).any():
-                assert "_FillValue" in attrs and np.isnan(attrs["_FillValue"]), ds_name
+        assert _text(f.attrs["created_utc"]).endswith("+00:00") and bool(f.attrs["complete"])
+
+        def check(ds_name, ds):
+            if not isinstance(ds, h5py.Dataset):
+                return
+            attrs = ds.attrs
+            units = _text(attrs["units"])
+            if units == "":
+                comp = np.asarray(attrs["component_units"]).astype(str)
+                assert set(comp.ravel()) <= UNITS, (ds_name, comp)
+            else:
+                assert units in UNITS, (ds_name, units)
+            v = ds[()]
+            if isinstance(v, np.ndarray) and v.dtype.kind in "fc":
+                assert not np.isinf(v).any(), ds_name
+                if np.isnan(v).any():
+                    assert "_FillValue" in attrs and np.isnan(attrs["_FillValue"]), ds_name
+            if ds.ndim and not ds.is_scale:
+                unscaled = [i for i in range(ds.ndim) if len(ds.dims[i]) == 0]
+                assert not unscaled, (ds_name, "axes without a dimension scale", unscaled)
+            elif ds.ndim:
+                assert ds.ndim == 1, ds_name
+
+        f.visititems(check)
     for group in _groups(path):
         with xr.open_dataset(path, group=group, engine="h5netcdf") as ds:
             missing = [d for d in ds.sizes if d not in ds.coords]
@@ -157,6 +180,26 @@ def test_select_by_coordinate(outputs, name):
             index = tuple(int(np.flatnonzero(ds[d].values == sel[d])[0]) if d in sel else slice(None)
                           for d in ds[var].dims)
             np.testing.assert_array_equal(picked.values, raw[index])
+
+
+def test_frf_and_campbell_by_value(outputs):
+    """frf: .sel(frequency_hz=1117.0, method="nearest") is the complex receptance h5py reads at the
+    nearest frequency, and the coordinate carries units "Hz"; campbell: .sel(speed_rpm=6000.0) gives
+    one frequency per mode, equal to the file's row, NaN where a mode is not tracked."""
+    path, _ = outputs("frf")
+    with xr.open_dataset(path, group="frf", engine="h5netcdf") as ds, h5py.File(path, "r") as f:
+        f_hz = f["frf/frequency_hz"][()]
+        k = int(np.argmin(np.abs(f_hz - 1117.0)))
+        h = ds.receptance_m_N.sel(frequency_hz=1117.0, method="nearest")
+        assert h.dtype == np.complex128 and h.values == f["frf/receptance_m_N"][k]
+        assert float(h.frequency_hz) == f_hz[k] and ds.frequency_hz.attrs["units"] == "Hz"
+        assert ds.receptance_m_N.attrs["units"] == "m/N"
+    path, _ = outputs("campbell")
+    with xr.open_dataset(path, group="campbell", engine="h5netcdf") as ds, h5py.File(path, "r") as f:
+        row = ds.frequency_hz.sel(speed_rpm=6000.0)
+        assert row.dims == ("mode",) and list(ds.mode.values) == list(range(1, ds.sizes["mode"] + 1))
+        np.testing.assert_array_equal(row.values, f["campbell/frequency_hz"][1])
+        assert ds.speed_rpm.attrs["units"] == "rpm"
 
 
 def test_mixed_units_and_labels(outputs):
@@ -184,97 +227,41 @@ def test_campbell_untracked_modes_are_fill(tmp_path, umask022):
 
 
 # ----------------------------------------------------------------------------------------------
-# write_h5 itself
+# a result that is not finite
 
 
-def test_refuses_inf_and_undeclared_nan(tmp_path):
-    path = tmp_path / "x.h5"
-    with pytest.raises(ValueError, match=r"/g/a has 1 infinite"):
-        write_h5(path, RUN, {"/g/a": (np.array([1.0, np.inf]), "m", ("i",))})
-    with pytest.raises(ValueError, match=r"/g/a has 1 NaN .* does not declare NaN"):
-        write_h5(path, RUN, {"/g/a": (np.array([1.0, np.nan]), "m", ("i",))})
-    with pytest.raises(ValueError, match=r"/g/c has 1 infinite"):  # Inf even where NaN is a fill value
-        write_h5(path, RUN, {"/g/c": Data(np.array([np.inf, np.nan]), "m", ("i",), fill_nan=True)})
-    with pytest.raises(ValueError, match=r"attribute 'speed_rpm' of /g"):
-        write_h5(path, RUN, {"/g/a": (np.ones(2), "m", ("i",))}, {"/g": {"speed_rpm": float("nan")}})
-    with pytest.raises(ValueError, match=r"infinite"):
-        write_h5(path, RUN, {"/g/z": (np.array([1 + 1j, complex(np.inf, 0)]), "m/N", ("i",))})
-    assert not list(tmp_path.iterdir())  # nothing written, no temporary left
+def _nan_bearing_forces(r):
+    return dataclasses.replace(r, bearing_force_N=np.full_like(r.bearing_force_N, np.nan))
 
 
-def test_declared_nan_fill_is_written(tmp_path):
-    path = write_h5(tmp_path / "x.h5", RUN, {
-        "/g/speed_rpm": (np.array([1.0, 2.0]), "rpm", ("speed_rpm",)),
-        "/g/limit_m": Data(np.array([1e-3, np.nan]), "m", ("speed_rpm",), "NaN: none", fill_nan=True)})
-    with h5py.File(path) as f:
-        assert np.isnan(f["g/limit_m"].attrs["_FillValue"]) and np.isnan(f["g/limit_m"].fillvalue)
-    with xr.open_dataset(path, group="g", engine="h5netcdf") as ds:
-        assert float(ds.limit_m.sel(speed_rpm=1.0)) == 1e-3 and ds.limit_m.attrs["description"] == "NaN: none"
+def _zero_receptance(r):  # a zero receptance makes the dynamic stiffness 1/H infinite (complex)
+    h = r.receptance_m_N.copy()
+    h[3] = 0.0
+    return dataclasses.replace(r, receptance_m_N=h)
 
 
-def test_incomplete_run_may_hold_nonfinite(tmp_path, caplog):
-    run = RunInfo("d", "<test>", "0" * 64, complete=False, incomplete_reason="interrupted")
-    with caplog.at_level(logging.WARNING, logger="spindlesim.output.hdf5"):
-        path = write_h5(tmp_path / "x.h5", run, {"/g/a": (np.array([1.0, np.nan]), "m", ("i",))})
-    assert "incomplete" in caplog.text and "/g/a" in caplog.text
-    with h5py.File(path) as f:
-        assert not f.attrs["complete"]
-
-
-def test_dimensions_and_index_coordinates(tmp_path):
-    path = write_h5(tmp_path / "x.h5", RUN, {
-        "/g/frequency_hz": (np.array([1.0, 2.0, 3.0]), "Hz", ("frequency_hz",)),
-        "/g/H": (np.ones((3, 2, 4), complex), "m/N", ("frequency_hz", "dof", "mode")),
-        "/g/scalar": (2.5, "W", ()),
-        "/g/legacy": (np.arange(2.0), "m"),  # no dimension names: written as before
-        **labels("/g", "dof", ("x", "y")),
-    })
-    with h5py.File(path) as f:
-        assert list(f["g/mode"][()]) == [1, 2, 3, 4] and f["g/mode"].attrs["units"] == "1"
-        assert f["g/frequency_hz"].is_scale and f["g/dof"].is_scale
-    with xr.open_dataset(path, group="g", engine="h5netcdf", phony_dims="sort") as ds:
-        assert ds.H.dims == ("frequency_hz", "dof", "mode")
-        assert ds.H.sel(frequency_hz=2.0, dof="y", mode=4).values == 1
-        assert float(ds.scalar) == 2.5
-    with pytest.raises(ValueError, match="dimension name"):
-        write_h5(tmp_path / "y.h5", RUN, {"/g/a": (np.ones((2, 2)), "m", ("i",))})
-    with pytest.raises(ValueError, match="dimension 'i'"):
-        write_h5(tmp_path / "y.h5", RUN, {"/g/a": (np.ones(2), "m", ("i",)), "/g/b": (np.ones(3), "m", ("i",))})
-
-
-@pytest.mark.parametrize("mask, mode", [(0o022, 0o644), (0o077, 0o600), (0o002, 0o664)])
-def test_files_follow_the_umask(tmp_path, mask, mode):
-    from spindlesim.output.figures import new_figure, save_figure
-
-    old = os.umask(mask)
-    try:
-        h5 = write_h5(tmp_path / "x.h5", RUN, {"/g/a": (np.ones(2), "m", ("i",))})
-        fig = new_figure(2, 2)
-        fig.subplots().plot([0, 1])
-        png = save_figure(fig, tmp_path / "x.png", dpi=20)
-    finally:
-        os.umask(old)
-    assert stat.S_IMODE(os.stat(h5).st_mode) == mode
-    assert stat.S_IMODE(os.stat(png).st_mode) == mode
-
-
-def test_command_exits_1_naming_the_dataset(tmp_path, monkeypatch):
-    """A solver result with NaN where none may be: exit 1, one line naming the dataset, no file."""
-    import dataclasses
+@pytest.mark.parametrize("command, module, solver, spoil, message", [
+    ("static", "spindlesim.analysis.static", "solve_static", _nan_bearing_forces,
+     "static.h5: refusing to write non-finite results: /static/bearing_force_N has 4 NaN value(s) of 4"),
+    ("frf", "spindlesim.analysis.frf", "solve_frf", _zero_receptance,
+     "frf.h5: refusing to write non-finite results: /frf/dynamic_stiffness_N_m has 1 infinite value(s) of 1000"),
+], ids=["static-nan", "frf-complex-inf"])
+def test_non_finite_result_exits_1_with_one_line(tmp_path, monkeypatch, command, module, solver, spoil, message):
+    """The CLI on the default deck, its solver's result spoilt as a numerical failure would: exit 1,
+    exactly one output line "spindlesim <command>: <file>: refusing to write non-finite results:
+    <dataset> has ...", and the output folder holds no file (no .h5, no temporary, no PNG)."""
+    import importlib
 
     from click.testing import CliRunner
 
-    import spindlesim.analysis.static as static
     from spindlesim.cli import main
 
-    solve = static.solve_static
-
-    def broken(*args, **kwargs):
-        r = solve(*args, **kwargs)
-        return dataclasses.replace(r, bearing_force_N=np.full_like(r.bearing_force_N, np.nan))
-
-    monkeypatch.setattr(static, "solve_static", broken)
-    res = CliRunner().invoke(main, ["static", "-o", str(tmp_path)])
-    assert res.exit_code == 1
-    assert "/static/bearing_force_N" in res.output and "NaN" in res.output
-    assert not list(tmp_path.glob("*.h5*"))
+    mod = importlib.import_module(module)
+    solve = getattr(mod, solver)
+    monkeypatch.setattr(mod, solver, lambda *a, **k: spoil(solve(*a, **k)))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        res = CliRunner().invoke(main, [command, "-o", str(tmp_path / "out")])
+    assert res.exit_code == 1, res.output
+    lines = res.output.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"spindlesim {command}: {message}"), res.output
+    assert not (tmp_path / "out").exists() or not list((tmp_path / "out").iterdir())
