@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out
 
-.PHONY: run test bench venv install install-test clean golden
+.PHONY: run test fuzz bench venv install install-test clean golden
 
 $(BIN)/python:
 	$(PY) -m venv $(VENV)
@@ -25,6 +25,13 @@ run: install
 
 test: install-test
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python -m pytest
+
+# Property tests of the deck loader with many more examples than `make test` (about 10 minutes);
+# FUZZ=long for ten times as many.  A failure prints the deck text that reproduces it.
+FUZZ ?= fuzz
+fuzz: install-test
+	SPINDLESIM_FUZZ=$(FUZZ) OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python -m pytest \
+	  -p no:cacheprovider tests/property --hypothesis-show-statistics
 
 bench: install-test
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python benchmarks/run.py

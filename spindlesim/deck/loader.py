@@ -30,12 +30,15 @@ log = logging.getLogger(__name__)
 ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient", "rotor_transient", "thermal",
             "coefficients", "bearing", "dtrb", "contact", "chatter")
 #: analyses of the rotor on its bearings: without a support the stiffness matrix is singular
-SUPPORTED_ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient")
+SUPPORTED_ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient", "chatter")
 #: bearing types that act on x and y only (no tilt or axial stiffness)
 RADIAL_ONLY = ("linear", "three_lobe", "plain", "roller")
 #: columns of a shaft, holder or tool row
 ROW_KEYS = ("outer_dia_mm", "inner_dia_mm", "length_mm", "density_kg_m3", "E_GPa", "G_GPa", "poisson",
             "axial_force_N")
+
+#: top-level keys with this prefix are not sections: they hold parts shared with anchors (``<<: *name``)
+SHARED_PREFIX = "x-"
 
 Marks = dict[tuple[Any, ...], tuple[int, int]]
 
@@ -125,6 +128,15 @@ def _message(err: dict[str, Any], data: Any, path: tuple[Any, ...]) -> str:
         return f"unknown type; expected one of {', '.join(names)}" + (f" ({hint[2:]})" if hint else "")
     if kind == "union_tag_not_found":
         return f"a bearing needs a type: one of {', '.join(sorted(bearing_types()))}"
+    bounds = {"less_than_equal": ("le", "<="), "less_than": ("lt", "<"), "greater_than_equal": ("ge", ">="),
+              "greater_than": ("gt", ">")}
+    ctx = err.get("ctx") or {}
+    if kind in bounds and isinstance(ctx.get(bounds[kind][0]), (int, float)) and \
+            isinstance(err.get("input"), (int, float)) and not isinstance(err.get("input"), bool):
+        got = err["input"]
+        big = isinstance(got, int) and abs(got) >= 10**300  # beyond a float
+        shown = f"an integer of {len(str(abs(got)))} digits" if big else f"{float(got):g}"
+        return f"must be {bounds[kind][1]} {ctx[bounds[kind][0]]:g}, got {shown}"
     msg = str(err["msg"])
     if msg.startswith("Value error, "):
         msg = msg[len("Value error, "):]
@@ -273,6 +285,8 @@ def parse_deck(text: str, filename: str = "<deck>") -> LoadedDeck:
                                 f"the deck is {kind}; it must be a mapping of sections (title:, shaft:, bearings:, ...)"))
     if data is None or not isinstance(data, dict):
         raise _capped(issues)
+    # top-level keys starting with "x-" hold shared parts for anchors and merge keys (``x-rows: &rows ...``)
+    data = {k: v for k, v in data.items() if not (isinstance(k, str) and k.startswith(SHARED_PREFIX))}
     yaml_paths = {i.path for i in issues}
     try:
         deck = deck_model().model_validate(data)

@@ -37,6 +37,9 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     info: dict[str, Any] = {"frf_source": spec.frf_source}
     deck_tool = None
     if spec.frf_source == "rotor":
+        from ..deck import require_rotor
+
+        require_rotor(loaded, "chatter")  # a located deck error (exit 2) without shaft, bearings or operating
         tool, deck_tool, info = _rotor_tools(d, spec, bool(opts.get("exact")), progress)
     else:
         tool = spec.tool

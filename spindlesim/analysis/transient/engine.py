@@ -45,6 +45,9 @@ METHODS = {"newmark": newmark.integrate, "rk4": explicit.integrate,
 #: default largest step of each method [s]
 NEWMARK_STEP = 5e-5
 RK4_STEP = 1e-6
+#: most time steps of one run (the deck checks the same bound, deck/limits.MAX_TRANSIENT_STEPS, for the
+#: default step; the step a stability limit picks is only known here)
+MAX_STEPS = 10_000_000
 
 
 @dataclass(frozen=True)
@@ -181,6 +184,11 @@ def _plan(settings: TransientSettings, system, x0, v0, f_primary: float) -> Plan
         fs = 1.0 / h
     else:
         fs = max(2000.0, 50.0 * f_primary)
+    steps = settings.duration_s / h
+    if steps > MAX_STEPS:
+        raise RuntimeError(f"the run would take {steps:.3g} time steps of {h:.3g} s (the step the stiffest "
+                           f"contact allows) for {settings.duration_s:g} s; the limit is {MAX_STEPS:g}: check "
+                           "the masses, stiffnesses and damping of the deck (an extreme value makes the step tiny)")
     plan, _ = plan_steps(settings.duration_s, h, fs, f_primary)
     return plan
 
