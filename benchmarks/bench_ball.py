@@ -122,7 +122,7 @@ def model_study() -> None:
         print(f"  {label:52s} {st.row_axial_load_N[0]:8.1f} {st.row_axial_load_N[1]:8.1f} "
               f"{st.contact_angle_outer_deg.max():8.2f} {st.stiffness[0, 0] / 1e6:7.1f} {st.stiffness[2, 2] / 1e6:7.1f} "
               f"{st.life_L10r_iso16281_Mrev:9.4g}")
-    print("  (*) study variants, not model options; see docs/theory.md, "Ball bearings", for the sense of the couple")
+    print("  (*) study variants, not model options; see docs/theory.md (Ball bearings) for the sense of the couple")
 
 
 def hertz_angle_study() -> None:

@@ -65,6 +65,8 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
     ctx.meta["spindlesim.strict"] = strict  # read by commands.common.load_or_default
     level = logging.WARNING - 10 * min(verbose, 2)
     logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
+    if verbose < 2:  # the Dask scheduler's own INFO lines are not results
+        logging.getLogger("distributed").setLevel(logging.WARNING)
     os.environ.setdefault("MPLBACKEND", "Agg")
     # Rotor matrices are small (~100-500 DOF): threaded BLAS only adds overhead (docs/decisions.md).
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):

@@ -2,54 +2,65 @@ import sys
 
 import click
 
-from .common import deck_argument, load_or_default, outdir_option, resolve_outdir
+from .common import deck_argument, load_or_default, outdir_option, report_options, resolve_outdir
 
 
 @click.command("run")
 @deck_argument
 @outdir_option
+@report_options
 def command(deck, outdir):
-    """Every analysis the deck lists (key 'analyses'), or static, modal, campbell, frf (and unbalance)."""
+    """Every analysis the deck lists (key 'analyses'), or static, modal, campbell, frf (and unbalance).
+
+    Prints the written paths and a short summary of each file's key results.  Exit codes: 0 every
+    analysis finished, 1 one failed (the others still run), 2 deck error, 3 one ran but is
+    incomplete (its files are marked complete = False), 130 interrupted (Ctrl-C: the analyses
+    not yet started are not run)."""
     import numpy as np
 
     from ..runs import default_analyses, run_analysis, run_info_for
     from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, IncompleteRun
     from ..deck import DeckError
-    from .common import report_deck_error
+    from .common import print_results, report_deck_error
 
     loaded = load_or_default(deck, "spindle")
     out = resolve_outdir(outdir, loaded)
     names = loaded.deck.analyses or default_analyses(loaded)
-    failed, incomplete = [], []
+    written, failed, incomplete = [], [], []
     for name in names:
         try:
-            for p in run_analysis(name, loaded, out, {}, run=run_info_for(loaded, " ".join(sys.argv))):
-                click.echo(str(p))
+            written += run_analysis(name, loaded, out, {}, run=run_info_for(loaded, " ".join(sys.argv)))
         except DeckError as exc:
             report_deck_error(exc)
         except IncompleteRun as exc:  # written, marked complete = False
-            for p in exc.paths:
-                click.echo(str(p))
-            click.echo(f"spindlesim run: {name}: {exc.reason}", err=True)
+            written += exc.paths
+            click.echo(f"spindlesim run: {name}: {exc.reason}; its files are marked complete = False", err=True)
             if exc.interrupted:
-                _stop(names, name)
+                _stop(names, name, written)
             incomplete.append(name)
         except KeyboardInterrupt:
-            _stop(names, name)
+            _stop(names, name, written)
         except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
             click.echo(f"spindlesim run: {name} failed: {exc}", err=True)
             failed.append(name)
+    print_results(written)
     if failed:
+        click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {EXIT_FAILED})", err=True)
         sys.exit(EXIT_FAILED)
     if incomplete:
+        click.echo(f"spindlesim run: incomplete: {', '.join(incomplete)} (exit code {EXIT_INCOMPLETE})", err=True)
         sys.exit(EXIT_INCOMPLETE)
 
 
-def _stop(names: list, name: str) -> None:
-    """Ctrl-C: the analyses after ``name`` are not started; exit code 130."""
+def _stop(names: list, name: str, written: list) -> None:
+    """Ctrl-C: the analyses after ``name`` are not started; what was written is listed; exit code 130."""
     from ..runs.status import EXIT_INTERRUPTED
+    from ..sweep.execution import sigint_ignored
+    from .common import print_results
 
     rest = names[names.index(name) + 1:]
-    click.echo(f"spindlesim run: interrupted during {name}" + (f"; not run: {', '.join(rest)}" if rest else ""),
-               err=True)
+    click.echo(f"spindlesim run: interrupted during {name}" + (f"; not run: {', '.join(rest)}" if rest else "")
+               + f" (exit code {EXIT_INTERRUPTED})", err=True)
+    with sigint_ignored():
+        print_results(written)
     sys.exit(EXIT_INTERRUPTED)

@@ -1,12 +1,13 @@
 """``spindlesim sweep DECK``: a parameter study over any deck value, on a process pool or Dask."""
 
 import contextlib
+import logging
 import sys
 from collections import Counter
 
 import click
 
-from .common import deck_argument, load_or_default, resolve_outdir
+from .common import deck_argument, load_or_default, report_options, resolve_outdir
 
 
 @click.command("sweep")
@@ -22,23 +23,26 @@ from .common import deck_argument, load_or_default, resolve_outdir
 @click.option("--scheduler", default=None, metavar="ADDRESS|local",
               help="Run on a Dask cluster: a scheduler address, or 'local' for a LocalCluster.")
 @click.option("--case-plots/--no-case-plots", default=False,
-              help="Keep each case's PNGs in its folder [default: off: only HDF5 per case, the summary PNGs].")
+              help="Draw each case's PNGs into its case folder [default: off: a case folder holds its HDF5 "
+                   "files, deck.yaml and case.json; the summary PNGs are always drawn].")
+@report_options
 def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     """Run ANALYSIS for every case of a parameter study; resumable, one HDF5 per case plus sweep.h5.
 
     Rerunning the same command runs only the cases not done (failed, incomplete, interrupted or
     never started).  Ctrl-C stops the running cases, starts no new one, writes sweep.h5 marked
-    incomplete and exits with 130.  Exit codes: 0 every case done, 1 a case failed or is
-    incomplete, 2 deck error, 130 interrupted."""
+    incomplete and exits with 130.  Prints the written paths and a table of the key results per
+    case.  Exit codes: 0 every case done, 1 a case failed, 2 deck error, 3 a case ran but is
+    incomplete (none failed), 130 interrupted."""
     from pathlib import Path
 
     from ..runs import analyses, run_info_for
     from ..deck import DeckError, parse_deck
     from ..sweep import build_cases, parse_set_option, run_sweep
     from ..sweep.cases import parse_values
-    from ..runs.status import EXIT_FAILED, EXIT_INTERRUPTED
+    from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, EXIT_INTERRUPTED
     from ..sweep.execution import sigint_ignored
-    from ..sweep.report import plot_overlay, plot_scalars, write_summary
+    from ..sweep.report import plot_overlay, plot_scalars, summary_table, write_summary
     from ..sweep.runner import SweepInterrupted
     from .common import report_deck_error
 
@@ -92,9 +96,12 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     except KeyboardInterrupt:  # every case is recorded; the summary is rewritten by the next run
         click.echo(f"sweep: interrupted while writing the summary (exit code {EXIT_INTERRUPTED})", err=True)
         sys.exit(EXIT_INTERRUPTED)
-    for p in paths:
-        if p is not None:
-            click.echo(str(p))
+    try:
+        lines, data = summary_table(res, max_scalars=4)
+    except Exception as exc:  # a summary must never hide the results themselves
+        logging.getLogger("spindlesim").warning("sweep results table unavailable: %s", exc)
+        lines, data = [], {}
+    _print_results([p for p in paths if p is not None], lines, data)
     not_done = [r for r in res.records if r.get("status") != "done"]
     counts = ", ".join(f"{n} {s}" for s, n in Counter(r.get("status") for r in not_done).items())
     click.echo(f"sweep: {len(res.ran)} run, {len(res.skipped)} already finished"
@@ -106,8 +113,30 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
         click.echo(f"sweep: interrupted; sweep.h5 is marked incomplete. Run the same command again to finish "
                    f"(exit code {EXIT_INTERRUPTED})", err=True)
         sys.exit(EXIT_INTERRUPTED)
-    if not_done:
+    if any(r.get("status") == "failed" for r in not_done):
         sys.exit(EXIT_FAILED)
+    if not_done:
+        sys.exit(EXIT_INCOMPLETE)
+
+
+def _print_results(paths: list, lines: list[str], data: dict) -> None:
+    """The written paths, then the per-case table (or both as JSON with --json; paths only with -q)."""
+    import json
+
+    from .common import _json_default
+
+    ctx = click.get_current_context(silent=True)
+    mode = ctx.meta.get("spindlesim.report", "text") if ctx is not None else "text"
+    if mode == "json":
+        click.echo(json.dumps({"paths": [str(p) for p in paths], "summary": {"sweep.h5": data}},
+                              default=_json_default, allow_nan=True))
+        return
+    for p in paths:
+        click.echo(str(p))
+    if mode != "quiet" and lines:
+        click.echo("\nsweep.h5:")
+        for line in lines:
+            click.echo(f"  {line}")
 
 
 def _operating_text(deck) -> str:

@@ -213,11 +213,14 @@ def _transient(f):
     lines = [f"{t[-1]:.4g} s simulated ({a.get('method', '')}, {int(len(t))} samples); "
              f"vibration amplitude over the last half x {amp[0] * 1e6:.4g} um, y {amp[1] * 1e6:.4g} um"]
     data = {"duration_s": float(t[-1]), "amplitude_m": amp.tolist()}
-    if "spectrum" in g:
-        fr, A = g["spectrum/frequency_hz"][:], g["spectrum/amplitude_m"][:]
-        k = int(np.argmax(np.max(A, axis=1)[1:])) + 1 if len(fr) > 1 else 0
+    fr = g["spectrum/frequency_hz"][:] if "spectrum" in g else np.zeros(0)
+    if len(fr) > 1:
+        A = g["spectrum/amplitude_m"][:]
+        k = int(np.argmax(np.max(A, axis=1)[1:])) + 1
         lines.append(f"  dominant line {fr[k]:.2f} Hz, {np.max(A[k]) * 1e6:.4g} um")
         data["dominant_hz"] = float(fr[k])
+    elif "spectrum" in g:
+        lines.append("  no spectrum: not enough steady data")
     for key in ("roller_pass_frequency_hz", "cage_frequency_hz"):
         if key in a:
             data[key] = float(a[key])

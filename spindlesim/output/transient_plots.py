@@ -8,6 +8,7 @@ about their steady mean (stated), so that a 1e-5 um vibration on a 0.02 um offse
 from __future__ import annotations
 
 import math
+import textwrap
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -55,10 +56,16 @@ def _speed_text(res: TransientResult) -> str:
     return f"{sp[0]:.0f} rpm" if np.ptp(sp) < 1e-9 * max(abs(sp[0]), 1.0) else f"{sp[0]:.0f}-{sp[-1]:.0f} rpm"
 
 
-def _title(res: TransientResult, what: str, operating: str = "") -> str:
+def _title(res: TransientResult, what: str, operating: str = "", width_in: float | None = None) -> str:
+    """The figure title; on a figure ``width_in`` inches wide the lines are wrapped to fit."""
     point = ", ".join(p for p in (_speed_text(res), operating) if p)
     s = f"{what}, node {res.record_node + 1}: {point} ({res.method})"
-    return s if res.complete else s + f"\nINCOMPLETE: {res.reason}"
+    if not res.complete:
+        s += f"\nINCOMPLETE: {res.reason}"
+    if width_in is None:
+        return s
+    chars = max(30, int(13 * width_in))  # about 13 characters per inch at 9 pt
+    return "\n".join(textwrap.fill(line, chars) for line in s.splitlines())
 
 
 def _no_data(ax, text: str) -> None:
@@ -161,7 +168,7 @@ def orbit_figure(res: TransientResult, operating: str = "") -> Figure:
     if steady.sum() < 2:
         if res.time_s.size < 4:
             _no_data(ax, "not enough steady data for an orbit")
-            ax.set_title(_title(res, "Orbit", operating), fontsize=9)
+            ax.set_title(_title(res, "Orbit", operating, 6.5), fontsize=9)
             return fig
         steady = np.arange(res.time_s.size) >= res.time_s.size // 2
         note = (f"run stopped at {res.time_s[-1]:.4g} s, before the steady part ({res.settle_s:.3g} s): "
@@ -184,7 +191,7 @@ def orbit_figure(res: TransientResult, operating: str = "") -> Figure:
     ax.legend(fontsize=7, loc="upper right")
     if note:
         ax.text(0.02, 0.02, note, transform=ax.transAxes, fontsize=7, color="tab:red", va="bottom", wrap=True)
-    ax.set_title(_title(res, "Orbit, steady part" if not note else "Orbit", operating), fontsize=9)
+    ax.set_title(_title(res, "Orbit, steady part" if not note else "Orbit", operating, 6.5), fontsize=9)
     return fig
 
 
@@ -216,8 +223,9 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
     f, A = spec.frequency_hz, spec.amplitude
     if not f.size:
         for a in ax:
-            _no_data(a, "not enough data for a spectrum (the run stopped after "
-                        f"{res.time_s[-1] if res.time_s.size else 0.0:.3g} s)")
+            _no_data(a, "not enough steady data for a spectrum: the run stopped at "
+                        f"{res.time_s[-1] if res.time_s.size else 0.0:.4g} s, the steady part starts at "
+                        f"{res.settle_s:.3g} s")
         fig.suptitle(_title(res, "Spectrum", operating), fontsize=9)
         return fig
     passes = pass_frequencies(res)
@@ -281,8 +289,8 @@ def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
     if not sets:
         stop = res.time_s[-1] if res.time_s.size else 0.0
         _no_data(axes[0], "not enough steady data for a Poincare map:\n"
-                 f"the run stopped at {stop:.4g} s, the steady part starts at {res.settle_s:.3g} s")
-        fig.suptitle(_title(res, "Poincare maps", operating), fontsize=9)
+                 f"the run stopped at {stop:.4g} s,\nthe steady part starts at {res.settle_s:.3g} s")
+        fig.suptitle(_title(res, "Poincare maps", operating, 4.3 * ncol), fontsize=9)
         return fig
     steady = _steady(res) if _steady(res).sum() >= 2 else np.ones(res.time_s.size, bool)
     x_all, v_all = res.displacement_m[steady, 0], res.velocity_m_s[steady, 0]
@@ -314,7 +322,7 @@ def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
         ax.grid(True, alpha=0.3)
     for ax in axes[len(sets):]:
         ax.remove()
-    fig.suptitle(_title(res, "Poincare maps", operating), fontsize=9)
+    fig.suptitle(_title(res, "Poincare maps", operating, 4.3 * ncol), fontsize=9)
     return fig
 
 

@@ -188,3 +188,35 @@ def plot_overlay(res: SweepResult, analysis: str, path: Path, title: str = "") -
     ax.legend(fontsize=7)
     ax.set_title((f"{title}\n" if title else "") + f"{analysis}: cases side by side", fontsize=10)
     return save_figure(fig, path)
+
+
+def _cell(v: float, scale: float) -> str:
+    return f"{v / scale:.4g}" if np.isfinite(v) else "-"
+
+
+def summary_table(res: SweepResult, max_scalars: int = 3) -> tuple[list[str], dict]:
+    """A compact text table, one row per case: index, parameters, status and the key results
+    (summary.KEY_SCALARS, in a readable unit); and the same numbers (SI) as a JSON-able dict."""
+    if not res.cases:
+        return [], {"cases": []}
+    table, units = scalar_table(res), scalar_units(res)
+    shown = plotted_scalars(res, max_scalars)
+    params = list(res.cases[0].parameters)
+    head = ["case"] + [short_name(p) + (f" [{unit_from_name(p)}]" if unit_from_name(p) else "") for p in params]
+    head.append("status")
+    scales = {}
+    for k in shown:
+        scales[k] = display_scale(table[k], units.get(k, ""))
+        head.append(_scalar_label(k, scales[k][1]))
+    rows, data = [], []
+    for i, (c, r) in enumerate(zip(res.cases, res.records)):
+        row = [str(c.index)] + [f"{c.parameters[p]:g}" if isinstance(c.parameters[p], float) else
+                                str(c.parameters[p]) for p in params] + [str(r.get("status", ""))]
+        row += [_cell(table[k][i], scales[k][0]) for k in shown]
+        rows.append(row)
+        data.append({"case": c.index, "key": c.key, "parameters": c.parameters, "status": r.get("status", ""),
+                     "scalars": {k: (float(table[k][i]) if np.isfinite(table[k][i]) else None) for k in shown}})
+    widths = [max(len(h), *(len(r[j]) for r in rows)) for j, h in enumerate(head)]
+    lines = ["  ".join(h.rjust(w) for h, w in zip(head, widths))]
+    lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]
+    return lines, {"cases": data, "units": {k: units.get(k, "") for k in shown}}

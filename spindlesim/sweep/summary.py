@@ -75,13 +75,23 @@ def _units_attr(obj) -> str:
     return u.decode() if isinstance(u, bytes) else str(u)
 
 
+def _is_series(ds) -> bool:
+    """A time series or a dimension scale (a short Poincare set, its time_s): samples, not scalars."""
+    cls = ds.attrs.get("CLASS", b"")
+    if (cls.decode() if isinstance(cls, bytes) else str(cls)) == "DIMENSION_SCALE":
+        return True
+    if ds.ndim and "DIMENSION_LIST" in ds.attrs:
+        return "time_s" in ds.dims[0].keys()
+    return False
+
+
 def _generic(f, units: dict[str, str]) -> dict[str, float]:
     import h5py
 
     out: dict[str, float] = {}
 
     def visit(name, obj):
-        if isinstance(obj, h5py.Dataset) and obj.dtype.kind in "iuf":
+        if isinstance(obj, h5py.Dataset) and obj.dtype.kind in "iuf" and not _is_series(obj):
             if obj.shape == ():
                 out[name] = float(obj[()])
                 units[name] = _units_attr(obj)
@@ -95,7 +105,9 @@ def _generic(f, units: dict[str, str]) -> dict[str, float]:
                 if isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, (bool, np.bool_)):
                     out[f"{name}@{k}"] = float(v)
                     stated = obj.attrs.get(f"{k}_units")
-                    units[f"{name}@{k}"] = str(stated) if stated is not None else unit_from_name(k)
+                    unit = str(stated) if stated is not None else unit_from_name(k)
+                    # an integer attribute without a unit is a count or an index (iterations, rollers, row)
+                    units[f"{name}@{k}"] = unit or ("1" if isinstance(v, (int, np.integer)) else "")
 
     f.visititems(visit)
     return out

@@ -52,3 +52,33 @@ def test_incomplete_result_is_written_and_marked(tmp_path):
         assert not bool(f.attrs["complete"])
         assert "interrupted" in f.attrs["incomplete_reason"]
         assert f["transient/time_s"][-1] <= 0.3
+
+
+def _texts(fig) -> str:
+    return " ".join([t.get_text() for t in fig.texts] + [t.get_text() for ax in fig.axes for t in ax.texts]
+                    + [ax.get_title() for ax in fig.axes]).replace("\n", " ")
+
+
+def test_run_stopped_before_the_steady_part_has_no_blank_panels():
+    from spindlesim.analysis.transient.engine import Perturbation, TransientSettings, simulate
+    from spindlesim.output.transient_plots import orbit_figure, poincare_figure, spectrum_figure
+    from tests.unit.test_rolling_transient_driver import Sabotage, oscillator_rotor
+
+    res = simulate(oscillator_rotor(Sabotage(0.1505, "interrupt")),
+                   TransientSettings(0.5, sample_rate_hz=1000, step_s=1e-4, settle_s=0.3,
+                                     perturbation=Perturbation(0, 1.0)))
+    assert not res.complete and res.time_s[-1] < res.settle_s
+    assert res.spectrum.frequency_hz.size == 0 and not any(p.time_s.size for p in res.poincare)
+
+    spec = spectrum_figure(res)
+    assert all(ax.lines for ax in spec.axes)  # the spectrum of what was computed, drawn
+    assert "before the steady part" in _texts(spec) and "INCOMPLETE: interrupted" in _texts(spec)
+    orbit = orbit_figure(res)
+    assert orbit.axes[0].lines and "before the steady part" in _texts(orbit)
+    poincare = poincare_figure(res)
+    assert "not enough steady data" in _texts(poincare) and "0.15 s" in _texts(poincare)
+
+    short = simulate(oscillator_rotor(Sabotage(0.0055, "interrupt")),
+                     TransientSettings(0.5, sample_rate_hz=1000, step_s=1e-4, settle_s=0.3,
+                                       perturbation=Perturbation(0, 1.0)))
+    assert "not enough steady data" in _texts(spectrum_figure(short))  # too few samples even for that

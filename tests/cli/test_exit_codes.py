@@ -1,0 +1,124 @@
+"""Exit codes (spindlesim/runs/status.py): 0 finished, 1 failed, 2 deck error, 3 ran but incomplete,
+130 interrupted.  The SIGINT tests signal a real `spindlesim` process once it is integrating."""
+
+import os
+import re
+import signal
+import subprocess
+import threading
+import time
+from importlib import resources
+from pathlib import Path
+
+import h5py
+from click.testing import CliRunner
+
+from spindlesim.cli import main
+
+SPINDLESIM = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
+RIG_DECK = (resources.files("spindlesim.decks") / "transient.yaml").read_text()
+LINEAR_DECK = (resources.files("spindlesim.decks") / "spindle_linear.yaml").read_text()
+
+
+def _env() -> dict:
+    return dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
+
+
+class _Lines:
+    """Collects a pipe's lines in a thread, so the test can wait for one without blocking."""
+
+    def __init__(self, pipe):
+        self.lines: list[str] = []
+        self._t = threading.Thread(target=self._read, args=(pipe,), daemon=True)
+        self._t.start()
+
+    def _read(self, pipe):
+        for line in pipe:
+            self.lines.append(line)
+
+    def wait_for(self, text: str, timeout: float) -> bool:
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if any(text in ln for ln in self.lines):
+                return True
+            time.sleep(0.05)
+        return False
+
+    def text(self) -> str:
+        self._t.join(5)
+        return "".join(self.lines)
+
+
+def _blowing_up_deck(tmp_path) -> Path:
+    """The rig deck with an RK4 step far above the flexible race's stability limit."""
+    deck = tmp_path / "blow.yaml"
+    deck.write_text(RIG_DECK.replace("  duration_s: 0.3 ", "  integrator: {step_us: 200.0}\n  duration_s: 0.3 "))
+    return deck
+
+
+def test_sigint_on_a_transient_exits_130_and_marks_the_files_incomplete(tmp_path):
+    out = tmp_path / "out"
+    proc = subprocess.Popen([str(SPINDLESIM), "transient", "--model", "flexible_race", "--duration", "3", "-o",
+                             str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=_env())
+    err, out_lines = _Lines(proc.stderr), _Lines(proc.stdout)
+    try:
+        assert err.wait_for("transient: 100/1000", 120), err.text()  # integrating: 10 % done
+        t0 = time.monotonic()
+        proc.send_signal(signal.SIGINT)
+        proc.wait(timeout=60)
+        stopped_after = time.monotonic() - t0
+        stdout = out_lines.text()
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 130, err.text()
+    assert stopped_after < 30  # writing the partial files and the plots takes a few seconds
+    assert "exit code 130" in err.text()
+    with h5py.File(out / "transient.h5") as f:
+        assert not bool(f.attrs["complete"])
+        assert "interrupted" in f.attrs["incomplete_reason"]
+        assert 0.3 <= f["transient/time_s"][-1] < 3.0
+    assert (out / "transient_spectrum.png").stat().st_size > 0
+    assert not list(out.glob("*.tmp*"))
+    assert str(out / "transient.h5") in stdout
+
+
+def test_integration_stopped_early_exits_3(tmp_path):
+    out = tmp_path / "out"
+    res = CliRunner().invoke(main, ["transient", str(_blowing_up_deck(tmp_path)), "--model", "flexible_race",
+                                    "--duration", "0.05", "-o", str(out)])
+    assert res.exit_code == 3, res.output
+    assert "non-finite state" in res.output and "exit code 3" in res.output
+    with h5py.File(out / "transient.h5") as f:
+        assert not bool(f.attrs["complete"])
+        assert "non-finite" in f.attrs["incomplete_reason"]
+    for name in ("transient_spectrum.png", "transient_poincare.png"):
+        assert (out / name).stat().st_size > 0
+
+
+def test_sweep_of_incomplete_cases_exits_3_and_nothing_is_done(tmp_path):
+    res = CliRunner().invoke(main, ["sweep", str(_blowing_up_deck(tmp_path)), "--analysis", "transient",
+                                    "--set", "transient.duration_s=0.004,0.005", "--set", "transient.model=flexible_race",
+                                    "--workers", "1", "-o", str(tmp_path / "sw")])
+    assert res.exit_code == 3, res.output
+    with h5py.File(tmp_path / "sw" / "sweep.h5") as f:
+        assert list(f["/sweep/status"].asstr()[()]) == ["incomplete", "incomplete"]
+        assert not bool(f.attrs["complete"])
+
+
+def test_run_prints_a_results_summary_and_a_failure_exits_1(tmp_path):
+    deck = tmp_path / "d.yaml"
+    deck.write_text(LINEAR_DECK + "\nanalyses: [static, modal]\n")
+    res = CliRunner().invoke(main, ["run", str(deck), "-o", str(tmp_path / "ok")])
+    assert res.exit_code == 0, res.output
+    assert str(tmp_path / "ok" / "modal.h5") in res.output
+    assert "modal.h5:" in res.output and "frequency Hz" in res.output  # the summary, not only the paths
+    quiet = CliRunner().invoke(main, ["run", str(deck), "-q", "-o", str(tmp_path / "ok")])
+    assert quiet.exit_code == 0 and "modal.h5:" not in quiet.output
+    # no bearing stiffness: a singular problem, reported without a traceback, exit code 1
+    deck.write_text(re.sub(r"K_N_m: \[\[.*\]\]", "K_N_m: [[0.0, 0.0], [0.0, 0.0]]", LINEAR_DECK)
+                    + "\nanalyses: [static, modal]\n")
+    bad = CliRunner().invoke(main, ["run", str(deck), "-o", str(tmp_path / "bad")])
+    assert bad.exit_code == 1, bad.output
+    assert "static failed" in bad.output and "exit code 1" in bad.output
