@@ -14,18 +14,55 @@ deck loader and the ``spindlesim chatter`` command build on it.
 * figures: :mod:`spindlesim.chatter.plots`.
 """
 
-from .frf import Mode, ToolPointFrf
-from .modal_fit import ModalFit, fit_tool_point_model
-from .process import MillingProcess, TurningProcess
-from .readers import FrfFileError, combine_frfs, read_frf, read_frf_csv, read_frf_uff, write_frf_csv
-from .results import LobeCurve, LobeDiagram, SimulationResult, StabilityMap
-from .sd_lobes import semi_discretization_lobes
-from .section import ChatterSection, ChatterSpec, build_chatter
-from .simulation import simulate
-from .stability import ChatterResult, run_chatter, stability_lobes
-from .state_space import ToolPointModel
-from .turning import oriented_frf, turning_lobes, turning_parametric_lobes
-from .zero_order import zero_order_lobes
+import importlib
+
+#: what the package exports and the module defining it: imported on first use (PEP 562), so that a
+#: deck loader reading only a section does not pay for the solvers' imports (scipy.signal, numba ...)
+_EXPORTS = {
+    "Mode": "frf",
+    "ToolPointFrf": "frf",
+    "ModalFit": "modal_fit",
+    "fit_tool_point_model": "modal_fit",
+    "MillingProcess": "process",
+    "TurningProcess": "process",
+    "FrfFileError": "readers",
+    "combine_frfs": "readers",
+    "read_frf": "readers",
+    "read_frf_csv": "readers",
+    "read_frf_uff": "readers",
+    "write_frf_csv": "readers",
+    "LobeCurve": "results",
+    "LobeDiagram": "results",
+    "SimulationResult": "results",
+    "StabilityMap": "results",
+    "semi_discretization_lobes": "sd_lobes",
+    "ChatterSection": "section",
+    "ChatterSpec": "section",
+    "build_chatter": "section",
+    "simulate": "simulation",
+    "ChatterResult": "stability",
+    "run_chatter": "stability",
+    "stability_lobes": "stability",
+    "ToolPointModel": "state_space",
+    "oriented_frf": "turning",
+    "turning_lobes": "turning",
+    "turning_parametric_lobes": "turning",
+    "zero_order_lobes": "zero_order",
+}
+
+
+def __getattr__(name: str):
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_EXPORTS))
+
 
 __all__ = [
     "Mode", "ToolPointFrf", "ToolPointModel", "ModalFit", "fit_tool_point_model",

@@ -7,12 +7,39 @@ Library entry points (SI): :func:`solve_roller_contact`, :func:`solve_point_cont
 :func:`solve_line_contact_2d`; closed forms in :mod:`spindlesim.contact.hertz`.
 """
 
-from .geometry import RollerProfile, equivalent_radius
-from .hertz import combined_modulus, line_contact, point_contact_circular, stribeck_max_roller_load
-from .line2d import LineContact2D, solve_line_contact_2d
-from .problems import STEEL, solve_point_contact, solve_roller_contact
-from .result import ContactResult
-from .solver import ContactNotConverged
+import importlib
+
+#: what the package exports and the module defining it: imported on first use (PEP 562), so that a
+#: deck loader reading only a section does not pay for the solvers' imports (scipy.signal, numba ...)
+_EXPORTS = {
+    "RollerProfile": "geometry",
+    "equivalent_radius": "geometry",
+    "combined_modulus": "hertz",
+    "line_contact": "hertz",
+    "point_contact_circular": "hertz",
+    "stribeck_max_roller_load": "hertz",
+    "LineContact2D": "line2d",
+    "solve_line_contact_2d": "line2d",
+    "STEEL": "problems",
+    "solve_point_contact": "problems",
+    "solve_roller_contact": "problems",
+    "ContactResult": "result",
+    "ContactNotConverged": "solver",
+}
+
+
+def __getattr__(name: str):
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_EXPORTS))
+
 
 __all__ = [
     "ContactResult", "ContactNotConverged", "LineContact2D", "RollerProfile", "STEEL",

@@ -8,7 +8,7 @@ import numpy as np
 from matplotlib.ticker import MultipleLocator
 
 from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
-from .figures import new_figure, save_figure
+from .figures import fixed_layout, new_figure, save_figure
 
 
 def plot_static(r: StaticResult, path: Path) -> Path:
@@ -43,7 +43,7 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
     """Mode shapes along the rotor (nodes in axial order, so a tool ahead of the nose reads left to
     right); ``bearings`` = (name, z [m]) are marked on every panel; the legend sits above the panels."""
     n = min(max_modes, len(r.frequency_hz))
-    fig = new_figure(10, 1.9 * max(n, 1) + 0.6)
+    fig = new_figure(10, 1.9 * max(n, 1) + 0.6, layout=None)
     axes = np.atleast_1d(fig.subplots(max(n, 1), 1, sharex=True))
     order = np.argsort(r.node_z_m, kind="stable")
     z = r.node_z_m[order] * 1e3
@@ -65,10 +65,13 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
         for name, zb in bearings:
             axes[0].annotate(name, (zb * 1e3, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -10),
                              textcoords="offset points", fontsize=7, color="0.35")
+    h = fig.get_size_inches()[1]
+    fixed_layout(fig, left_in=0.85, top_in=0.75, bottom_in=0.55, gap_in=0.5)
     handles, labels = axes[0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="outside upper right", ncols=len(labels), fontsize=8, frameon=False)
+    fig.legend(handles, labels, loc="upper right", bbox_to_anchor=(0.99, 1 - 0.08 / h), ncols=len(labels),
+               fontsize=8, frameon=False)
     axes[-1].set_xlabel("axial position z [mm]")
-    fig.suptitle(f"Damped mode shapes at {r.speed_rpm:g} rpm", x=0.02, ha="left")
+    fig.suptitle(f"Damped mode shapes at {r.speed_rpm:g} rpm", x=0.02, y=1 - 0.1 / h, ha="left", va="top")
     return fig
 
 
@@ -79,7 +82,7 @@ def plot_campbell(r: CampbellResult, path: Path, operating_rpm: float | None = N
 def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
     """Tracked modes (one colour per mode in both panels; marker = whirl), the 0.5x, 1x and 2x lines,
     critical speeds marked where 1x crosses a forward mode, speeds with an unstable mode shaded."""
-    fig = new_figure(10, 7.5)
+    fig = new_figure(10, 7.5, layout=None)
     ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
     s = r.speed_rpm
     marker = {"forward": "^", "backward": "v", "mixed": "o", "axial": "s"}
@@ -114,7 +117,10 @@ def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
     ax1.set_ylabel("damped natural frequency [Hz]")
     ax1.set_ylim(0, top)
     ax1.set_xlim(s[0], s[-1])
-    fig.legend(*ax1.get_legend_handles_labels(), loc="outside right upper", fontsize=7, frameon=False)
+    w = fig.get_size_inches()[0]
+    fixed_layout(fig, right_in=1.2, gap_in=0.3)
+    fig.legend(*ax1.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1 - 1.15 / w, ax1.get_position().y1),
+               fontsize=7, frameon=False)
     crit = ", ".join(f"{c:.0f}" for c in r.critical_speeds_rpm)
     ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (*)" if len(r.critical_speeds_rpm)
                                         else ": no critical speed in the range"), fontsize=11)
@@ -123,7 +129,8 @@ def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
     ax2.set_ylabel("log decrement [-]")
     ax2.set_xlabel("speed [rpm]")
     ax2.set_yscale("symlog", linthresh=0.01)
-    fig.legend(*ax2.get_legend_handles_labels(), loc="outside right lower", fontsize=7, frameon=False)
+    fig.legend(*ax2.get_legend_handles_labels(), loc="lower left", bbox_to_anchor=(1 - 1.15 / w, ax2.get_position().y0),
+               fontsize=7, frameon=False)
     ax2.grid(True, alpha=0.3)
     return fig
 
@@ -165,7 +172,7 @@ def plot_campbell_frozen(r: CampbellResult, frozen: CampbellResult, frozen_rpm: 
 def plot_frf(r: FrfResult, path_magphase: Path, path_reim: Path) -> tuple[Path, Path]:
     f, h = r.frequency_hz, r.receptance_m_N
     label = f"node {r.output_node} {r.output_dof} / node {r.input_node} {r.input_dof} at {r.speed_rpm:g} rpm"
-    fig = new_figure(8, 6)
+    fig = new_figure(8, 6, layout=None)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     a1.semilogy(f, np.abs(h) * 1e6)
     a1.set_ylabel("|receptance| [um/N]")
@@ -176,8 +183,8 @@ def plot_frf(r: FrfResult, path_magphase: Path, path_reim: Path) -> tuple[Path, 
     a2.set_xlabel("frequency [Hz]")
     a2.yaxis.set_major_locator(MultipleLocator(90))
     a2.grid(True, alpha=0.3)
-    p1 = save_figure(fig, path_magphase)
-    fig = new_figure(8, 6)
+    p1 = save_figure(fixed_layout(fig), path_magphase)
+    fig = new_figure(8, 6, layout=None)
     b1, b2 = fig.subplots(2, 1, sharex=True)
     b1.plot(f, h.real * 1e6)
     b1.set_ylabel("real part [um/N]")
@@ -187,7 +194,7 @@ def plot_frf(r: FrfResult, path_magphase: Path, path_reim: Path) -> tuple[Path, 
     b2.set_ylabel("imaginary part [um/N]")
     b2.set_xlabel("frequency [Hz]")
     b2.grid(True, alpha=0.3)
-    return p1, save_figure(fig, path_reim)
+    return p1, save_figure(fixed_layout(fig), path_reim)
 
 
 def plot_unbalance(r: UnbalanceResult, path: Path) -> Path:

@@ -16,15 +16,30 @@ Layers (each usable on its own):
                       :mod:`film_spline`); imported on demand (numba)
 """
 
-from spindlesim.bearings.fluidfilm.bearing import FluidFilmBearing
-from spindlesim.bearings.fluidfilm.geometry import (
-    BearingGeometry,
-    Land,
-    multilobe_geometry,
-    plain_geometry,
-)
-from spindlesim.bearings.fluidfilm.thermal import ThermalEquilibriumError, ThermalParameters
-from spindlesim.bearings.fluidfilm.viscosity import ConstantViscosity, WaltherViscosity
+import importlib
+
+#: exports and their modules, imported on first use (PEP 562): the deck section needs none of them
+_EXPORTS = {
+    "FluidFilmBearing": "bearing",
+    "BearingGeometry": "geometry",
+    "Land": "geometry",
+    "multilobe_geometry": "geometry",
+    "plain_geometry": "geometry",
+    "ThermalEquilibriumError": "thermal",
+    "ThermalParameters": "thermal",
+    "ConstantViscosity": "viscosity",
+    "WaltherViscosity": "viscosity",
+}
+
+
+def __getattr__(name: str):
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = [
     "BearingGeometry", "ConstantViscosity", "FluidFilmBearing", "Land", "ThermalEquilibriumError",

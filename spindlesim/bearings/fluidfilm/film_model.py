@@ -15,13 +15,16 @@ bore.  The viscosity is an argument (the thermal-equilibrium value of the operat
 from __future__ import annotations
 
 import os
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from spindlesim.bearings.fluidfilm.film_force import ExactFilmForce
-from spindlesim.bearings.fluidfilm.film_table import TableFilmForce, TableResolution
 from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
 from spindlesim.bearings.fluidfilm.reynolds import DEFAULT_AXIAL, DEFAULT_CIRCUMFERENTIAL
+
+if TYPE_CHECKING:
+    from spindlesim.bearings.fluidfilm.film_table import TableResolution
 
 METHODS = ("table", "reynolds")
 
@@ -38,6 +41,8 @@ class FilmForceModel:
         self.geometry = geometry
         self.method = method
         if method == "table":
+            from spindlesim.bearings.fluidfilm.film_table import TableFilmForce  # numba, scipy.interpolate
+
             self._impl = TableFilmForce(geometry, n_circ, n_axial, resolution, cache_dir)
         else:
             self._impl = ExactFilmForce(geometry, n_circ, n_axial)
