@@ -54,8 +54,8 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
 
     states, stopped = None, ""
     if frozen_rpm is None:
-        states, stopped = static_states(rotor, shaft, speeds, tick)
-        speeds = speeds[: len(states)]
+        states, stopped, first = static_states(rotor, shaft, speeds, tick)
+        speeds = speeds[first: first + len(states)]
         total = 2 * len(speeds)
     else:  # the bearings' state at frozen_rpm, the shaft (gyroscopics) at every speed
         held = operating_state(rotor, frozen_rpm, shaft)
@@ -100,23 +100,32 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
 
 
 def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], None] | None = None):
-    """(static states, "") at every speed, each warm-started from its neighbour's; when one fails,
+    """(static states, "", 0) at every speed, each warm-started from its neighbour's; when one fails,
     the states before it and the reason ("stopped at ... rpm: ..."); the first speed's failure is
-    raised (nothing to show)."""
-    states, st = [], None
+    raised (nothing to show), except at rest, which is left out with a warning (a fluid film carries
+    no load at 0 rpm: ``--speeds 0:12000:50`` then starts at the first positive speed); the third item is
+    the index of the first speed solved."""
+    states, st, first = [], None, 0
     for s in speeds:
         try:
             st = operating_state(rotor, s, shaft, start=st)
         except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
+            if not states and s <= 0 and len(speeds) > 1:  # e.g. a fluid film carries nothing at rest
+                log.warning("Campbell diagram: %g rpm left out (%s)", s, exc)
+                first += 1
+                if tick is not None:
+                    tick()
+                continue
             if not states:
                 raise
-            reason = f"stopped at {s:g} rpm (speeds from {speeds[0]:g} to {speeds[len(states) - 1]:g} rpm done): {exc}"
+            done = (states[0].speed_rad_s / RPM, states[-1].speed_rad_s / RPM)
+            reason = f"stopped at {s:g} rpm (speeds from {done[0]:g} to {done[1]:g} rpm done): {exc}"
             log.warning("Campbell diagram %s", reason)
-            return states, reason
+            return states, reason, first
         states.append(st)
         if tick is not None:
             tick()
-    return states, ""
+    return states, "", first
 
 
 API684_MIN_AF = 2.5

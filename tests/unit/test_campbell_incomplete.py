@@ -25,3 +25,14 @@ def test_campbell_stops_at_the_failing_speed_and_says_where(tmp_path):
         assert not f.attrs["complete"]
         assert "stopped at 24000 rpm" in f.attrs["incomplete_reason"]
         assert list(f["campbell/speed_rpm"][:]) == [12000.0, 18000.0]
+
+
+def test_rest_is_left_out_for_a_fluid_film_rotor(tmp_path):
+    """`campbell --speeds 0:...` on a fluid-film deck: a film carries no load at 0 rpm, so that speed
+    is left out with a warning and the diagram starts at the first positive speed (exit 0, complete)."""
+    out = tmp_path / "out"
+    r = CliRunner().invoke(main, ["campbell", "--speeds", "0:2000:3", "-o", str(out)])
+    assert r.exit_code == 0, r.output
+    with h5py.File(out / "campbell.h5") as f:
+        assert list(f["campbell/speed_rpm"][:]) == [1000.0, 2000.0]
+        assert bool(f.attrs["complete"])
