@@ -58,7 +58,7 @@ def clear_caches():
     for name, obj in vars(ffb).items():
         if name not in keep and hasattr(obj, "cache_clear"):
             obj.cache_clear()
-        elif name == "_NEAR" and isinstance(obj, dict):  # warm start of the next thermal equilibrium
+        elif name in ("_NEAR", "_OFFSETS") and isinstance(obj, dict):  # warm starts, journal offsets
             obj.clear()
 
 
@@ -114,7 +114,7 @@ def breakdown(rotor, speeds, n_modes):
         ("static_states (all speeds)", camp, "static_states"),
         ("  thermal equilibrium (solve_thermal)", ffb, "solve_thermal"),
         ("    isoviscous operating point", fft, "operating_point"),
-        ("  journal offset (load_N alone, isoviscous)", ffb, "_offset_cached"),
+        ("  journal offset (load_N alone, isoviscous)", ffb, "_offset"),
         ("      journal equilibrium (Newton)", ffp, "solve_newton"),
         ("      journal equilibrium (axisymmetric)", ffp, "solve_axisymmetric"),
         ("        Reynolds solve", ReynoldsSolver, "solve"),

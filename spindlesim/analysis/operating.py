@@ -264,7 +264,9 @@ def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_d
         if rn > 0.5 * rn_old and np.max(np.abs(R)) <= 1e-7 * _force_scale(f_scale, forces):
             return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it  # at the round-off floor
         lam = lam * 0.1 if lam > 1e-12 else 0.0
-        small_step = np.max(np.abs(step)) <= tol * max(float(np.max(np.abs(x))), 1e-12)
+        # converged: the residual at round-off and the last step small (a Newton step of 1e-6 of the
+        # displacement with the residual already below tol leaves the next one at ~1e-12: not worth a solve)
+        small_step = np.max(np.abs(step)) <= 1e-6 * max(float(np.max(np.abs(x))), 1e-12)
         scale = _force_scale(f_scale, forces)
         if np.max(np.abs(R)) <= tol * scale and (small_step or np.max(np.abs(R)) <= 1e-3 * tol * scale):
             return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it

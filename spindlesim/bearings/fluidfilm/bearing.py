@@ -124,7 +124,7 @@ class FluidFilmBearing(BearingBase):
                                    viscosity_Pa_s=None, film_method="reynolds", force_offset_N=(0.0, 0.0),
                                    journal_offset_m=None)
 
-    def journal_offset(self, speed: float, viscosity_Pa_s: float | None = None) -> np.ndarray:
+    def journal_offset(self, speed: float, viscosity_Pa_s: float | None = None, near=None) -> np.ndarray:
         """e_0: the journal position carrying ``load_N`` alone at the film's viscosity of the operating
         point (``viscosity_Pa_s``; by default that of ``load_N`` alone), zero without ``load_N``.
         Any fixed reference would do (the static, modal and transient analyses all measure from it);
@@ -135,7 +135,7 @@ class FluidFilmBearing(BearingBase):
             return np.asarray(self.journal_offset_m, float)
         free = self.free()
         mu = free.analyze(speed).film.viscosity_Pa_s if viscosity_Pa_s is None else viscosity_Pa_s
-        return _offset_cached(free, float(speed), float(mu)).copy()
+        return _offset(free, float(speed), float(mu), near).copy()
 
     def linearized(self, speed: float, static_load: np.ndarray | None = None):
         """(K [2x2] N/m, C [2x2] N s/m) in the x, y frame at the thermal equilibrium."""
@@ -145,7 +145,7 @@ class FluidFilmBearing(BearingBase):
     def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
         """The journal position of the thermal equilibrium at (speed, load), from ``journal_offset``."""
         film = self.analyze(speed, static_load).film
-        return film.position_m - self.journal_offset(speed, film.viscosity_Pa_s)
+        return film.position_m - self.journal_offset(speed, film.viscosity_Pa_s, near=film)
 
     def at_operating_point(self, speed: float, static_load: np.ndarray | None = None,
                            transient: bool = False) -> "FluidFilmBearing":
@@ -154,7 +154,7 @@ class FluidFilmBearing(BearingBase):
         integration with the deck's ``transient_film`` force model."""
         free = self.free()
         film = free.analyze(speed, static_load).film
-        offset = tuple(float(v) for v in free.journal_offset(speed, film.viscosity_Pa_s)) if self.load_N is not None else None
+        offset = tuple(float(v) for v in free.journal_offset(speed, film.viscosity_Pa_s, near=film)) if self.load_N is not None else None
         free = dataclasses.replace(free, journal_offset_m=offset)
         geo, base = free.geometry, None
         if geo.axisymmetric and not geo.lands[0].periodic:  # feed max_film: the film start stays put
@@ -191,13 +191,25 @@ class FluidFilmBearing(BearingBase):
         return f, K, C
 
 
-@functools.lru_cache(maxsize=256)
-def _offset_cached(bearing: FluidFilmBearing, speed_rad_s: float, viscosity_Pa_s: float) -> np.ndarray:
-    """The isoviscous journal position carrying ``load_N`` alone (``journal_offset``)."""
+_OFFSETS: dict[tuple, np.ndarray] = {}
+
+
+def _offset(bearing: FluidFilmBearing, speed_rad_s: float, viscosity_Pa_s: float, near=None) -> np.ndarray:
+    """The isoviscous journal position carrying ``load_N`` alone (``journal_offset``), solved once per
+    (bearing, speed, viscosity); ``near`` (the operating point's film) starts the Newton iteration.
+    The solution does not depend on the start beyond the solver's tolerance."""
     from .performance import equilibrium
 
-    eq = equilibrium(bearing.solver, viscosity_Pa_s, speed_rad_s, np.array([0.0, -float(bearing.load_N)]))
-    return np.array([eq.X, eq.Y]) * bearing.geometry.clearance_m
+    key = (bearing, speed_rad_s, viscosity_Pa_s)
+    if key not in _OFFSETS:
+        start = {} if near is None else {"initial": np.asarray(near.position_m) / bearing.geometry.clearance_m,
+                                          "full_film_guess": near.full_film}
+        eq = equilibrium(bearing.solver, viscosity_Pa_s, speed_rad_s, np.array([0.0, -float(bearing.load_N)]),
+                         **start)
+        if len(_OFFSETS) > 256:
+            _OFFSETS.clear()
+        _OFFSETS[key] = np.array([eq.X, eq.Y]) * bearing.geometry.clearance_m
+    return _OFFSETS[key]
 
 
 #: the last thermal equilibrium of each bearing: the start of its next one (a neighbouring speed)
