@@ -213,7 +213,7 @@ def _offset(bearing: FluidFilmBearing, speed_rad_s: float, viscosity_Pa_s: float
 
 
 #: the last thermal equilibrium of each bearing: the start of its next one (a neighbouring speed)
-_NEAR: dict[FluidFilmBearing, ThermalResult] = {}
+_NEAR: dict[FluidFilmBearing, tuple[ThermalResult, ...]] = {}
 
 
 @functools.lru_cache(maxsize=256)
@@ -221,9 +221,28 @@ def _analyze_cached(bearing: FluidFilmBearing, speed_rad_s: float, wx: float, wy
     """Static, modal, FRF and Campbell ask for the same operating points: solve each once, each
     started from the bearing's previous equilibrium (a Campbell diagram's neighbouring speed; the
     result does not depend on the start, :func:`solve_thermal`)."""
+    before = _NEAR.get(bearing, ())
     res = solve_thermal(bearing.solver, bearing.viscosity, speed_rad_s, np.array([wx, wy]), bearing.thermal,
-                        near=_NEAR.get(bearing))
+                        near=before[-1] if before else None, guess_C=_extrapolated(before, speed_rad_s, wx, wy))
     if len(_NEAR) > 64:
         _NEAR.clear()
-    _NEAR[bearing] = res
+    _NEAR[bearing] = (before[-1], res) if before else (res,)
     return res
+
+
+def _extrapolated(before: tuple, speed_rad_s: float, wx: float, wy: float) -> float | None:
+    """The mean film temperature at ``speed_rad_s`` on the line through the last two equilibria of the
+    bearing (a Campbell diagram's previous speeds), when both had this load (within 1 %); else None."""
+    if len(before) < 2:
+        return None
+    a, b = before
+    wa, wb = a.film.speed_rad_s, b.film.speed_rad_s
+    w = np.array([wx, wy])
+    tol = 0.01 * max(float(np.hypot(wx, wy)), 1e-12)  # the guess only saves film solutions: 1 % will do
+    same_load = max(np.max(np.abs(a.film.load_N - w)), np.max(np.abs(b.film.load_N - w))) <= tol
+    if not same_load or wa == wb:
+        return None
+    t = (speed_rad_s - wb) / (wb - wa)
+    if not 0.0 < t <= 2.0:  # extrapolate forward, at most two steps
+        return None
+    return b.temperature_mean_C + t * (b.temperature_mean_C - a.temperature_mean_C)

@@ -113,14 +113,15 @@ def _balance(p: ThermalParameters, aA: float, film: FilmResult):
 
 def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N: np.ndarray,
                   params: ThermalParameters, xtol: float = 1e-6,
-                  near: ThermalResult | None = None) -> ThermalResult:
+                  near: ThermalResult | None = None, guess_C: float | None = None) -> ThermalResult:
     """Thermal equilibrium and the operating point at it.
 
     ``viscosity`` is a callable temperature [degC] -> Pa s (:mod:`viscosity`); a
     :class:`ConstantViscosity` gives an isoviscous film whose temperatures follow from
     eq. 12 without feedback.  ``near`` is the equilibrium of a neighbouring state (the previous
     speed of a Campbell diagram): its temperature brackets the root in two or three film solutions
-    and its journal position and film start the first one.  The root is found to ``xtol`` degC
+    and its journal position and film start the first one (``guess_C``, a better first temperature, e.g.
+    extrapolated from two neighbours).  The root is found to ``xtol`` degC
     either way (1e-6 degC: the result does not depend on where the search started).
     """
     geo = solver.geometry
@@ -153,7 +154,7 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     def g(theta: float) -> float:
         return _balance(params, aA, film_at(theta))[0] - theta
 
-    bracket = None if near is None else _near_bracket(g, near.temperature_mean_C)
+    bracket = None if near is None else _near_bracket(g, near.temperature_mean_C if guess_C is None else guess_C)
     if bracket is not None:
         theta = bracket[0] if bracket[0] == bracket[1] else brentq(g, *bracket, xtol=xtol, rtol=1e-12)
         return _result(params, aA, film_at(theta), state["n"])
@@ -212,7 +213,7 @@ def _near_bracket(g, theta0: float, tries: int = 4):
         g0 = g(theta0)
         if g0 == 0.0:
             return theta0, theta0
-        step = g0 + math.copysign(0.05 + 0.1 * abs(g0), g0)
+        step = g0 + math.copysign(0.01 + 0.1 * abs(g0), g0)
         a, ga = theta0, g0
         for _ in range(tries):
             b = min(max(a + step, -50.0), MAX_TEMPERATURE_C)
