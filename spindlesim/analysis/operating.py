@@ -163,6 +163,10 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
             break  # nothing the loads set has changed: the equilibrium found stands
         if q is None:
             q, internal, K_lin, coef = _affine_start(frozen, idx, K_s, Q, loads, speed)
+        elif start is not None and outer == 0:
+            # the affine start is exact when the loads the bearings were frozen at are the answer (a
+            # neighbouring speed's loads often are): better than the neighbour's displacements
+            q, internal, K_lin, _ = _affine_start(frozen, idx, K_s, Q, loads, speed, start.coefficients)
         q, internal, f, its = _newton(rotor, frozen, idx, K_s, Q, q, internal, speed, tol, max_iter, np.diag(K_lin))
         total += its
         new = [-fb[: len(i)] for fb, i in zip(f, idx)]
@@ -181,13 +185,14 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
                           total)
 
 
-def _affine_start(bearings, idx, K_s, Q, loads, speed):
+def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None):
     """Start of Newton: each bearing replaced by f_b = -W_b - K_b (q_b - d_b) about the displacement
-    d_b that carries its estimated load W_b (``static_displacement``): exact when the loads are."""
+    d_b that carries its estimated load W_b (``static_displacement``): exact when the loads are,
+    whatever K_b; ``near_coef`` (a neighbouring speed's coefficients) saves the ``linearized`` calls."""
     K, r = K_s.copy(), Q.copy()
     internal, coef = [], []
-    for b, i, w in zip(bearings, idx, loads):
-        kb, cb = b.linearized(speed, w)
+    for k, (b, i, w) in enumerate(zip(bearings, idx, loads)):
+        kb, cb = b.linearized(speed, w) if near_coef is None else near_coef[k]
         coef.append((kb, cb))
         d = b.static_displacement(speed, w)
         K[np.ix_(i, i)] += kb

@@ -116,8 +116,10 @@ def solve_axisymmetric(solver: ReynoldsSolver, target: np.ndarray, tol: float = 
 
 def solve_newton(solver: ReynoldsSolver, target: np.ndarray, initial=(0.0, 0.0),
                  tol: float = 1e-9, max_iter: int = 60,
-                 full_film_guess: np.ndarray | None = None) -> Equilibrium:
-    """Newton iteration on the journal position for ``f(X, Y) = target``."""
+                 full_film_guess: np.ndarray | None = None, initial_solution=None) -> Equilibrium:
+    """Newton iteration on the journal position for ``f(X, Y) = target``; ``initial_solution`` is the
+    film already solved at ``initial`` (dimensionless: the same for any viscosity, speed and load), so
+    a neighbouring operating point starts without solving it again."""
     fmag = float(np.hypot(*target))
     if fmag <= 0:
         raise EquilibriumError("zero load")
@@ -126,7 +128,11 @@ def solve_newton(solver: ReynoldsSolver, target: np.ndarray, initial=(0.0, 0.0),
         # start slightly displaced along the load (the journal moves towards the load
         # direction, which is opposite to the film force on it)
         x = -0.05 * target / fmag
-    sol = solver.solve(x[0], x[1], full_film_guess)
+    same = initial_solution is not None and np.allclose([initial_solution.X, initial_solution.Y], x,
+                                                        rtol=1e-12, atol=1e-15)  # m -> Cb units round-off
+    sol = initial_solution if same else solver.solve(x[0], x[1], full_film_guess)
+    if same:
+        x = np.array([initial_solution.X, initial_solution.Y])
     guess = sol.full_film
     res = sol.force - target
     for it in range(1, max_iter + 1):

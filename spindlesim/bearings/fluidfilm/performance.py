@@ -35,7 +35,7 @@ def film_force_scale(geometry: BearingGeometry, viscosity_Pa_s: float, speed_rad
 
 
 def equilibrium(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: float,
-                load_N: np.ndarray, initial=None, full_film_guess=None) -> Equilibrium:
+                load_N: np.ndarray, initial=None, full_film_guess=None, initial_solution=None) -> Equilibrium:
     """Journal equilibrium under the load ``load_N`` (force of the shaft on the bearing).
 
     ``initial`` (X, Y) and ``full_film_guess`` warm-start the iteration from a nearby state.
@@ -49,17 +49,17 @@ def equilibrium(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: floa
         return solve_axisymmetric(solver, target, initial_eps=eps0,
                                   full_film_guess=full_film_guess)
     return solve_newton(solver, target, initial=(0.0, 0.0) if initial is None else initial,
-                        full_film_guess=full_film_guess)
+                        full_film_guess=full_film_guess, initial_solution=initial_solution)
 
 
 def operating_point(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: float,
                     load_N: np.ndarray, density_kg_m3: float = float("nan"),
-                    initial=None, full_film_guess=None) -> FilmResult:
+                    initial=None, full_film_guess=None, initial_solution=None) -> FilmResult:
     """Equilibrium, coefficients, friction, flows and film of one isoviscous state."""
     geo = solver.geometry
     load = np.asarray(load_N, dtype=float)
     W = float(np.hypot(*load))
-    eq = equilibrium(solver, viscosity_Pa_s, speed_rad_s, load, initial, full_film_guess)
+    eq = equilibrium(solver, viscosity_Pa_s, speed_rad_s, load, initial, full_film_guess, initial_solution)
     film = eq.film
     R, Cb, Cp = geo.radius_m, geo.clearance_m, geo.machined_clearance_m
     mu, om = viscosity_Pa_s, speed_rad_s
@@ -98,6 +98,7 @@ def operating_point(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: 
         node_theta_rad=np.mod(theta, 2 * math.pi),
         node_z_m=g.node_j * (geo.width_m / 2 / g.n_axial),
         full_film=eq.grid_full_film,
+        solution=eq.film if not geo.axisymmetric else None,  # axisymmetric: the film is a rotated one
     )
 
 

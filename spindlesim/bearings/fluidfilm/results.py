@@ -14,7 +14,8 @@ Clearance bases (see docs/theory.md):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -48,6 +49,9 @@ class FilmResult:
     node_theta_rad: np.ndarray  # angle of each unknown in the x, y frame
     node_z_m: np.ndarray  # axial position of each unknown (0 = mid-plane, half width)
     full_film: np.ndarray | None = None  # full-film set on the solver grid (warm starts)
+    #: the dimensionless film solution at this position (independent of viscosity, speed and load):
+    #: the first Newton step of a neighbouring operating point starts from it without a new solve
+    solution: Any = field(default=None, compare=False, repr=False)
 
 
 @dataclass(frozen=True)

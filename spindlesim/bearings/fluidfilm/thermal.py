@@ -128,10 +128,10 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     aA = params.conductance(geo)
     load = np.asarray(load_N, dtype=float)
     rho = params.density_kg_m3
-    state = {"pos": None, "set": None, "n": 0}
+    state = {"pos": None, "set": None, "n": 0, "sol": None}
     done: dict[float, FilmResult] = {}  # brentq asks again for the ends of its bracket
     if near is not None:
-        state["pos"], state["set"] = near.film.position_m, near.film.full_film
+        state["pos"], state["set"], state["sol"] = near.film.position_m, near.film.full_film, near.film.solution
 
     def film_at(theta: float) -> FilmResult:
         if theta in done:
@@ -139,8 +139,8 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
         mu = viscosity(theta)
         init = None if state["pos"] is None else state["pos"] / geo.clearance_m
         f = operating_point(solver, mu, speed_rad_s, load, rho, initial=init,
-                            full_film_guess=state["set"])
-        state["pos"], state["set"] = f.position_m, f.full_film
+                            full_film_guess=state["set"], initial_solution=state["sol"])
+        state["pos"], state["set"], state["sol"] = f.position_m, f.full_film, f.solution
         state["n"] += 1
         done[theta] = f
         return f
