@@ -139,3 +139,16 @@ class Range(DeckModel):
     start: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
     stop: Annotated[float, Field(gt=0, le=ANY_NUMBER)]
     count: Annotated[int, Field(ge=2, le=RANGE_COUNT_MAX)]
+
+
+class Load5(DeckModel):
+    """A load on the five DOFs of a bearing: forces x, y, z [N] and moments about x, y [N m]."""
+
+    fx_N: float = 0.0
+    fy_N: float = 0.0
+    fz_N: float = 0.0
+    mx_Nm: float = 0.0
+    my_Nm: float = 0.0
+
+    def vector(self) -> list[float]:
+        return [self.fx_N, self.fy_N, self.fz_N, self.mx_Nm, self.my_Nm]

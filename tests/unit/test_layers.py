@@ -18,7 +18,7 @@ ROOT = Path(spindlesim.__file__).parent
 
 #: rank of each top-level package or module; imports must go to a strictly lower rank
 RANK = {
-    "__init__": 0, "fields": 0,
+    "__init__": 0, "fields": 0, "lazy": 0,
     "contact": 1,
     "bearings": 2, "chatter": 2,
     "deck": 3, "model": 3,

@@ -51,7 +51,7 @@ from typing import Annotated, Literal, Optional, Union
 
 from pydantic import Field, model_validator
 
-from ...fields import DeckModel, NodeNumber, NonNegFloat, PositiveFloat, Range
+from ...fields import DeckModel, Load5, NodeNumber, NonNegFloat, PositiveFloat, Range
 
 LoadComponent = Literal["fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm"]
 LOAD_COMPONENTS = ("fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm")
@@ -147,19 +147,6 @@ class BallBearingEntry(_BallKeys):
     type: Literal["ball"]
     name: str
     node: NodeNumber
-
-
-class Load5(DeckModel):
-    """What the shaft puts on the bearing."""
-
-    fx_N: float = 0.0
-    fy_N: float = 0.0
-    fz_N: float = 0.0
-    mx_Nm: float = 0.0
-    my_Nm: float = 0.0
-
-    def vector(self) -> list[float]:
-        return [self.fx_N, self.fy_N, self.fz_N, self.mx_Nm, self.my_Nm]
 
 
 class LoadSweep(DeckModel):

@@ -14,7 +14,7 @@ reactions (36-40) and the analytic 5x5 stiffness.
 - ``bearing``: :class:`DtrbBearing` (reaction, stiffness, equilibrium, linearized).
 """
 
-import importlib
+from spindlesim.lazy import lazy_exports
 
 #: what the package exports and the module defining it: imported on first use (PEP 562), so that a
 #: deck loader reading only a section does not pay for the solvers' imports (scipy.signal, numba ...)
@@ -25,17 +25,8 @@ _EXPORTS = {
 }
 
 
-def __getattr__(name: str):
-    module = _EXPORTS.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
-
-def __dir__():
-    return sorted(list(globals()) + list(_EXPORTS))
 
 
 __all__ = ["DtrbBearing", "DtrbGeometry", "dtrb_geometry"]

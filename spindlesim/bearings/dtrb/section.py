@@ -39,7 +39,7 @@ from typing import Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
-from ...fields import AnyNumber, DeckModel, NodeNumber, PositiveFloat
+from ...fields import AnyNumber, DeckModel, Load5, NodeNumber, PositiveFloat
 
 Count = Annotated[int, Field(ge=2, le=2000)]
 MAX_POLAR = 16
@@ -73,17 +73,6 @@ class DtrbGeometrySpec(DeckModel):
             raise ValueError(f"{self.rollers_per_row} rollers of {self.large_end_diameter_mm} mm do not fit "
                              f"on a {self.pitch_diameter_mm} mm pitch circle")
         return self
-
-
-class Load5(DeckModel):
-    fx_N: float = 0.0
-    fy_N: float = 0.0
-    fz_N: float = 0.0
-    mx_Nm: float = 0.0
-    my_Nm: float = 0.0
-
-    def vector(self) -> list[float]:
-        return [self.fx_N, self.fy_N, self.fz_N, self.mx_Nm, self.my_Nm]
 
 
 class SweepRange(DeckModel):

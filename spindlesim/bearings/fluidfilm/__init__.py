@@ -16,7 +16,7 @@ Layers (each usable on its own):
                       :mod:`film_spline`); imported on demand (numba)
 """
 
-import importlib
+from spindlesim.lazy import lazy_exports
 
 #: exports and their modules, imported on first use (PEP 562): the deck section needs none of them
 _EXPORTS = {
@@ -32,13 +32,7 @@ _EXPORTS = {
 }
 
 
-def __getattr__(name: str):
-    module = _EXPORTS.get(name)
-    if module is None:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
+__getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 
 __all__ = [
