@@ -142,14 +142,7 @@ def solve_rates(solver: ReynoldsSolver, X: float, Y: float, omega: float, Xr: fl
     ``omega = 1`` (with ``Xr, Yr`` its ``Xdot, Ydot``).
     """
     geo, g = solver.geometry, solver.grid
-    Hc = _film_at(geo, g.cf_land, g.cf_theta, X, Y)
-    Ha = _film_at(geo, g.af_land, g.af_theta, X, Y)
-    Hmid = _film_at(geo, solver._mid_land, solver._mid_theta, X, Y)
-    hmin = float(min(Hc.min(), Hmid.min()))
-    if hmin <= 0.0:
-        raise ReynoldsError(
-            f"journal position X={X:.4f}, Y={Y:.4f} (e/Cb {math.hypot(X, Y):.4f}) touches the "
-            f"bore (min H {hmin:.3g})")
+    Hc, Ha, Hmid = solver.film_heights(X, Y)
     gc, ga = solver._conductances(Hc, Ha)
     diag = solver._diagonal(gc, ga)
     area = g.node_area
@@ -176,10 +169,29 @@ def solve_rates(solver: ReynoldsSolver, X: float, Y: float, omega: float, Xr: fl
         cols = -np.stack([cw[idx] @ dP, sw[idx] @ dP])  # (2, 4)
         jp, jr = cols[:, :2].copy(), cols[:, 2:].copy()
     return RateSolution(X=X, Y=Y, pressure=P, force=force, jac_position=jp, jac_rate=jr,
-                        full_film=inactive, min_film=hmin, iterations=it)
+                        full_film=inactive, min_film=float(min(Hc.min(), Hmid.min())), iterations=it)
 
 
-class ExactFilmForce:
+class DimensionalFilmForce:
+    """Base of the film force models: ``dimensionless(X, X_r, omega) -> (f, df/dX, df/dX_r)`` given by
+    the model, turned into SI here."""
+
+    geometry: BearingGeometry
+
+    def dimensionless(self, X: np.ndarray, Xr: np.ndarray, omega: float):
+        raise NotImplementedError
+
+    def force_and_tangent(self, q_m, v_m_s, omega_rad_s: float, viscosity_Pa_s: float):
+        """(f [N], K_t = -df/dq [N/m], C_t = -df/dv [N s/m]) on the shaft, x-y frame."""
+        c = self.geometry.clearance_m
+        X = np.asarray(q_m, dtype=float) / c
+        Xr = np.asarray(v_m_s, dtype=float) / c
+        f, jp, jr = self.dimensionless(X, Xr, float(omega_rad_s))
+        s = force_scale(self.geometry, viscosity_Pa_s)
+        return s * f, -(s / c) * jp, -(s / c) * jr
+
+
+class ExactFilmForce(DimensionalFilmForce):
     """Dimensional film force and tangent from a full Reynolds LCP solve per call.
 
     Keeps the last full-film set as the warm start of the next call (one active-set step
@@ -217,11 +229,3 @@ class ExactFilmForce:
             Jp = R @ sol.jac_position @ R.T
         return f, Jp, Jr
 
-    def force_and_tangent(self, q_m, v_m_s, omega_rad_s: float, viscosity_Pa_s: float):
-        """(f [N], K_t = -df/dq [N/m], C_t = -df/dv [N s/m]) on the shaft, x-y frame."""
-        c = self.geometry.clearance_m
-        X = np.asarray(q_m, dtype=float) / c
-        Xr = np.asarray(v_m_s, dtype=float) / c
-        f, jp, jr = self.dimensionless(X, Xr, float(omega_rad_s))
-        s = force_scale(self.geometry, viscosity_Pa_s)
-        return s * f, -(s / c) * jp, -(s / c) * jr

@@ -70,6 +70,7 @@ import numpy as np
 from scipy.interpolate import BSpline
 
 from spindlesim.bearings.fluidfilm.film_force import (
+    DimensionalFilmForce,
     ExactFilmForce,
     force_scale,
     lcp_active_set,
@@ -349,7 +350,7 @@ def land_table(shape: LandShape, res: TableResolution, directory: str | None = N
     return table
 
 
-class TableFilmForce:
+class TableFilmForce(DimensionalFilmForce):
     """Film force and tangent of a bearing from its land tables (exact solve off the table)."""
 
     def __init__(self, geometry: BearingGeometry, n_circ: int = DEFAULT_CIRCUMFERENTIAL,
@@ -393,11 +394,3 @@ class TableFilmForce:
                             t.coef, t.has_centre, t.knots_centre, t.coef_centre, f, Jp, Jr)
         return f, Jp, Jr
 
-    def force_and_tangent(self, q_m, v_m_s, omega_rad_s: float, viscosity_Pa_s: float):
-        """(f [N], K_t [N/m], C_t [N s/m]) on the shaft, x-y frame."""
-        c = self.geometry.clearance_m
-        X = np.asarray(q_m, dtype=float) / c
-        Xr = np.asarray(v_m_s, dtype=float) / c
-        f, jp, jr = self.dimensionless(X, Xr, float(omega_rad_s))
-        s = force_scale(self.geometry, viscosity_Pa_s)
-        return s * f, -(s / c) * jp, -(s / c) * jr

@@ -334,6 +334,19 @@ class ReynoldsSolver:
         return self._system(Hc, *self._conductances(Hc, Ha), Xdot, Ydot)
 
     # -- solve ----------------------------------------------------------------
+    def film_heights(self, X: float, Y: float):
+        """(H at the circumferential faces, H at the axial faces, H at the cell middles) at the journal
+        position (X, Y) = e / Cb; ReynoldsError when the journal touches the bore."""
+        geo, g = self.geometry, self.grid
+        Hc = _film_at(geo, g.cf_land, g.cf_theta, X, Y)
+        Ha = _film_at(geo, g.af_land, g.af_theta, X, Y)
+        Hmid = _film_at(geo, self._mid_land, self._mid_theta, X, Y)
+        hmin = float(min(Hc.min(), Hmid.min()))
+        if hmin <= 0.0:
+            raise ReynoldsError(f"journal position X={X:.4f}, Y={Y:.4f} (e/Cb {math.hypot(X, Y):.4f}) touches "
+                                f"the bore (min H {hmin:.3g})")
+        return Hc, Ha, Hmid
+
     def solve(self, X: float, Y: float, full_film_guess: np.ndarray | None = None,
               max_iter: int = 200, Xdot: float = 0.0, Ydot: float = 0.0) -> FilmSolution:
         """Film at the journal position (X, Y) = e / Cb.
@@ -342,13 +355,7 @@ class ReynoldsSolver:
         to verify the damping coefficients by finite differences).
         """
         geo, g = self.geometry, self.grid
-        Hc = _film_at(geo, g.cf_land, g.cf_theta, X, Y)
-        Ha = _film_at(geo, g.af_land, g.af_theta, X, Y)
-        Hmid = _film_at(geo, self._mid_land, self._mid_theta, X, Y)
-        hmin = float(min(Hc.min(), Hmid.min()))
-        if hmin <= 0.0:
-            raise ReynoldsError(
-                f"journal position X={X:.4f}, Y={Y:.4f} touches the bore (min H {hmin:.3g})")
+        Hc, Ha, Hmid = self.film_heights(X, Y)
         gc, ga = self._conductances(Hc, Ha)
         b = self._face_divergence(6.0 * Hc * g.cf_w)
         if Xdot or Ydot:  # squeeze term: -12 dH/dtau * area, dH/dtau = -X' cos - Y' sin
@@ -442,6 +449,6 @@ class ReynoldsSolver:
                   X, Y, it, idx.size, n)
         return FilmSolution(X=X, Y=Y, pressure=P, force=force, jac_position=jp,
                             jac_velocity=jv, friction=friction, inlet_flow=inlet,
-                            side_flow=side, min_film=hmin, full_film=inactive,
+                            side_flow=side, min_film=float(min(Hc.min(), Hmid.min())), full_film=inactive,
                             iterations=it)
 
