@@ -7,16 +7,18 @@ state-space model on its own frequency grid).
 
 from __future__ import annotations
 
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
-from matplotlib.figure import Figure
 
 from .frf import DIRECTIONS, ToolPointFrf
 from .results import LobeDiagram, SimulationResult
 from .state_space import ToolPointModel
 
 __all__ = ["lobe_diagram_figure", "frf_figure", "stability_map_figure", "simulation_figure"]
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 _KIND_STYLE = {"hopf": ("C0", "-"), "flip": ("C3", "-"), "fold": ("C2", "-"), "": ("C0", "-")}
 
@@ -28,7 +30,7 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
     Flip (period-doubling) parts of a semi-discretization boundary are drawn in red.
     Simulated points: o stable, x chatter.
     """
-    fig = Figure(figsize=(9.0, 5.0), layout="constrained")
+    fig = _figure(9.0, 5.0)
     ax = fig.add_subplot()
     n = diagram.speed_rpm
     lim = 1e3 * diagram.limit_depth_m
@@ -78,7 +80,7 @@ def frf_figure(tool: ToolPointFrf | ToolPointModel, terms: Sequence[str] = ("xx"
                title: str | None = None) -> Figure:
     """Real and imaginary parts (left) and magnitude and phase (right) of the chosen terms [m/N -> um/N]."""
     frf = tool.frf() if isinstance(tool, ToolPointModel) else tool
-    fig = Figure(figsize=(10.0, 6.0), layout="constrained")
+    fig = _figure(10.0, 6.0)
     (a_re, a_mag), (a_im, a_ph) = fig.subplots(2, 2, sharex=True)
     f = frf.frequency_hz
     for t in terms:
@@ -111,7 +113,7 @@ def stability_map_figure(diagram: LobeDiagram, title: str | None = None, rho_ran
     smap = diagram.stability_map
     if smap is None:
         raise ValueError(f"the {diagram.method} diagram has no stability map (semi-discretization only)")
-    fig = Figure(figsize=(9.0, 5.0), layout="constrained")
+    fig = _figure(9.0, 5.0)
     ax = fig.add_subplot()
     d_mm = 1e3 * smap.depth_m
     mesh = ax.pcolormesh(smap.speed_rpm, d_mm, smap.spectral_radius.T, shading="nearest", cmap="RdBu_r",
@@ -130,7 +132,7 @@ def stability_map_figure(diagram: LobeDiagram, title: str | None = None, rho_ran
 
 def simulation_figure(sim: SimulationResult, title: str | None = None, periods_shown: int = 30) -> Figure:
     """Time history, spectrum (tooth-passing harmonics dotted, chatter frequency marked) and Poincare section."""
-    fig = Figure(figsize=(11.0, 7.0), layout="constrained")
+    fig = _figure(11.0, 7.0)
     gs = fig.add_gridspec(2, 2)
     ax_t = fig.add_subplot(gs[0, :])
     ax_f = fig.add_subplot(gs[1, 0])
@@ -185,3 +187,10 @@ def simulation_figure(sim: SimulationResult, title: str | None = None, periods_s
     fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {verdict} "
                  f"(growth per period {sim.growth_per_period:.4f})", fontsize="medium")
     return fig
+
+
+def _figure(width_in: float, height_in: float) -> Figure:
+    """A constrained-layout figure; matplotlib is imported here, not when the module is."""
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=(width_in, height_in), layout="constrained")

@@ -10,7 +10,6 @@ from pathlib import Path
 from typing import Callable
 
 import click
-import numpy as np
 
 log = logging.getLogger("spindlesim")
 
@@ -126,6 +125,8 @@ def print_results(paths: list[Path]) -> None:
 
 
 def _json_default(v):
+    import numpy as np
+
     if isinstance(v, (np.floating, np.integer, np.bool_)):
         return v.item()
     if isinstance(v, np.ndarray):
@@ -134,12 +135,25 @@ def _json_default(v):
 
 
 def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
-    """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks."""
+    """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks.
+
+    From the ``spindlesim`` program the figures are drawn in a figure process started here, before
+    anything imports numpy (spindlesim/output/drawing.py)."""
+    from ..output.drawing import figure_process
+
+    with figure_process():
+        _run_and_report(name, deck, outdir, default_name, options)
+
+
+def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
+    import gc
+
     from ..runs import run_analysis, run_info_for
     from ..runs.status import EXIT_INTERRUPTED, IncompleteRun
     from ..deck import DeckError
 
     loaded = load_or_default(deck, default_name)
+    gc.freeze()  # the modules imported so far are never garbage: later collections need not walk them
     out = resolve_outdir(outdir, loaded)
     update, close = progress_reporter(name)
     try:
@@ -159,9 +173,13 @@ def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_na
         click.echo(f"spindlesim {name}: interrupted (exit code {EXIT_INTERRUPTED})", err=True)
         sys.exit(EXIT_INTERRUPTED)
     # --- end run status ---
-    except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
+    except (ValueError, ArithmeticError, RuntimeError) as exc:  # numpy's LinAlgError is a ValueError
         close()
         click.echo(f"spindlesim {name}: {exc}", err=True)
+        sys.exit(1)
+    except OSError as exc:  # a file that cannot be written (disk full, a directory in the way, permissions)
+        close()
+        click.echo(f"spindlesim {name}: cannot write the results: {exc}", err=True)
         sys.exit(1)
     close()
     print_results(paths)

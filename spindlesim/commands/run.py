@@ -16,8 +16,13 @@ def command(deck, outdir):
     analysis finished, 1 one failed (the others still run), 2 deck error, 3 one ran but is
     incomplete (its files are marked complete = False), 130 interrupted (Ctrl-C: the analyses
     not yet started are not run)."""
-    import numpy as np
+    from ..output.drawing import figure_process
 
+    with figure_process():  # before numpy is imported (spindlesim/output/drawing.py)
+        _run(deck, outdir)
+
+
+def _run(deck, outdir) -> None:
     from ..runs import default_analyses, run_analysis, run_info_for
     from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, IncompleteRun
     from ..deck import DeckError
@@ -40,7 +45,7 @@ def command(deck, outdir):
             incomplete.append(name)
         except KeyboardInterrupt:
             _stop(names, name, written)
-        except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
+        except (ValueError, ArithmeticError, RuntimeError, OSError) as exc:  # LinAlgError is a ValueError
             click.echo(f"spindlesim run: {name} failed: {exc}", err=True)
             failed.append(name)
     print_results(written)

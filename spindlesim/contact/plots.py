@@ -6,17 +6,21 @@ compute no physics.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-from matplotlib.figure import Figure
 
 from .result import ContactResult
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 __all__ = ["pressure_map_figure", "roller_profile_figure"]
 
 
 def pressure_map_figure(result: ContactResult, title: str = "Contact pressure") -> Figure:
     """Colour map of p(x, y) [GPa] with the maximum marked; axes in mm."""
-    fig = Figure(figsize=(8.0, 4.0), layout="constrained")
+    fig = _figure(8.0, 4.0)
     ax = fig.add_subplot()
     x_mm, y_mm = 1e3 * result.x_m, 1e3 * result.y_m
     p = result.pressure_Pa / 1e9
@@ -41,7 +45,7 @@ def pressure_map_figure(result: ContactResult, title: str = "Contact pressure") 
 
 def roller_profile_figure(result: ContactResult) -> Figure:
     """Centre-line pressure [GPa] and contact half-width [mm] along the roller."""
-    fig = Figure(figsize=(8.0, 5.5), layout="constrained")
+    fig = _figure(8.0, 5.5)
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     y_mm = 1e3 * result.y_m
     ax1.plot(y_mm, result.centreline_pressure_Pa / 1e9, label="x = 0")
@@ -57,3 +61,10 @@ def roller_profile_figure(result: ContactResult) -> Figure:
     for ax in (ax1, ax2):
         ax.grid(True, alpha=0.3)
     return fig
+
+
+def _figure(width_in: float, height_in: float) -> Figure:
+    """A constrained-layout figure; matplotlib is imported here, not when the module is."""
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=(width_in, height_in), layout="constrained")

@@ -1,20 +1,27 @@
-"""Figure helpers: matplotlib's object API (no pyplot state), atomic PNG save."""
+"""Figure helpers: matplotlib's object API (no pyplot state), atomic PNG save.
+
+matplotlib is imported inside the functions: a plotting module that takes its helpers from here
+can be imported without it (output/drawing.py: the main process of the command line never imports
+matplotlib when a figure process draws for it).
+"""
 
 from __future__ import annotations
 
 import os
 import tempfile
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
-
-from .hdf5 import publish
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 
 def new_figure(width_in: float = 8.0, height_in: float = 5.0, layout: str | None = "constrained") -> Figure:
     """A figure on the Agg canvas; ``layout=None`` for :func:`fixed_layout` (no layout engine: saving
     then draws once instead of twice)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
     fig = Figure(figsize=(width_in, height_in), layout=layout)
     FigureCanvasAgg(fig)
     return fig
@@ -46,12 +53,15 @@ def fixed_layout(fig: Figure, left_in: float = 0.9, right_in: float = 0.25, top_
 
 def save_figure(fig: Figure, path: str | Path, dpi: int = 110) -> Path:
     """Save ``fig`` as PNG via a temporary file and rename; the file gets the umask's mode (0644 under 022)."""
+    from .hdf5 import publish
+
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp.png", dir=path.parent)
     os.close(fd)
     try:
-        fig.savefig(tmp, dpi=dpi, format="png")
+        # zlib level 3 instead of PIL's 6: a third less time for files about 10 % larger
+        fig.savefig(tmp, dpi=dpi, format="png", pil_kwargs={"compress_level": 3})
         publish(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -1,17 +1,19 @@
-"""PNG plots of rotor analyses (plots never compute physics beyond unit conversion)."""
+"""Figures of the rotor analyses (no physics beyond unit conversion).
+
+Each ``*_figure`` function returns a figure for :func:`spindlesim.output.drawing.draw`; the module
+imports matplotlib only inside them (through .figures), so the main process of a command can name
+them without importing matplotlib.
+"""
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
-from matplotlib.ticker import MultipleLocator
 
 from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
-from .figures import fixed_layout, new_figure, save_figure
+from .figures import fixed_layout, new_figure
 
 
-def plot_static(r: StaticResult, path: Path) -> Path:
+def static_figure(r: StaticResult):
     fig = new_figure(8, 6)
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     z = r.node_z_m * 1e3
@@ -31,12 +33,7 @@ def plot_static(r: StaticResult, path: Path) -> Path:
     ax2.set_ylabel("slope [urad]")
     ax2.legend()
     ax2.grid(True, alpha=0.3)
-    return save_figure(fig, path)
-
-
-def plot_modes(r: ModalResult, path: Path, max_modes: int = 8,
-               bearings: tuple[tuple[str, float], ...] = ()) -> Path:
-    return save_figure(modes_figure(r, max_modes, bearings), path)
+    return fig
 
 
 def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, float], ...] = ()):
@@ -57,9 +54,10 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
         for name, zb in bearings:
             ax.axvline(zb * 1e3, color="0.55", lw=0.8, ls="--", label="bearing" if name == bearings[0][0] else None)
         ax.set_ylabel("amplitude [-]")
+        ax.set_yticks([-1.0, 0.0, 1.0])  # normalised: the largest translation is 1 (three ticks keep 8 panels cheap)
         what = r.whirl[k] if r.whirl[k] != "axial" else "axial (lateral part shown)"
         ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.4f}, "
-                     f"log dec {r.log_dec[k]:.3f}, {what}", fontsize=9)
+                     f"log dec {r.log_dec[k]:.3f}, {what}", fontsize=9, y=1.0)
         ax.grid(True, alpha=0.3)
     if bearings:
         for name, zb in bearings:
@@ -73,10 +71,6 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
     axes[-1].set_xlabel("axial position z [mm]")
     fig.suptitle(f"Damped mode shapes at {r.speed_rpm:g} rpm", x=0.02, y=1 - 0.1 / h, ha="left", va="top")
     return fig
-
-
-def plot_campbell(r: CampbellResult, path: Path, operating_rpm: float | None = None) -> Path:
-    return save_figure(campbell_figure(r, operating_rpm), path)
 
 
 def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
@@ -149,7 +143,7 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
     return out
 
 
-def plot_campbell_frozen(r: CampbellResult, frozen: CampbellResult, frozen_rpm: float, path: Path) -> Path:
+def campbell_frozen_figure(r: CampbellResult, frozen: CampbellResult, frozen_rpm: float):
     """The speed-dependent diagram (solid) over the one with bearing coefficients frozen at one speed (dashed)."""
     fig = new_figure(9, 6)
     ax = fig.subplots()
@@ -166,38 +160,49 @@ def plot_campbell_frozen(r: CampbellResult, frozen: CampbellResult, frozen_rpm: 
     ax.set_title("Campbell diagram: effect of the bearings' speed dependence")
     ax.legend(fontsize=8)
     ax.grid(True, alpha=0.3)
-    return save_figure(fig, path)
+    return fig
 
 
-def plot_frf(r: FrfResult, path_magphase: Path, path_reim: Path) -> tuple[Path, Path]:
+def _frf_label(r: FrfResult) -> str:
+    return f"node {r.output_node} {r.output_dof} / node {r.input_node} {r.input_dof} at {r.speed_rpm:g} rpm"
+
+
+def frf_magnitude_phase_figure(r: FrfResult):
+    """|H| (log) over the unwrapped phase."""
+    from matplotlib.ticker import MultipleLocator
+
     f, h = r.frequency_hz, r.receptance_m_N
-    label = f"node {r.output_node} {r.output_dof} / node {r.input_node} {r.input_dof} at {r.speed_rpm:g} rpm"
     fig = new_figure(8, 6, layout=None)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     a1.semilogy(f, np.abs(h) * 1e6)
     a1.set_ylabel("|receptance| [um/N]")
-    a1.set_title("Receptance " + label)
+    a1.set_title("Receptance " + _frf_label(r))
     a1.grid(True, which="both", alpha=0.3)
     a2.plot(f, np.degrees(np.unwrap(np.angle(h))))  # unwrapped: no false vertical jumps at +-180
     a2.set_ylabel("phase (unwrapped) [deg]")
     a2.set_xlabel("frequency [Hz]")
     a2.yaxis.set_major_locator(MultipleLocator(90))
     a2.grid(True, alpha=0.3)
-    p1 = save_figure(fixed_layout(fig), path_magphase)
+    return fixed_layout(fig)
+
+
+def frf_real_imag_figure(r: FrfResult):
+    """Real over imaginary part of H."""
+    f, h = r.frequency_hz, r.receptance_m_N
     fig = new_figure(8, 6, layout=None)
     b1, b2 = fig.subplots(2, 1, sharex=True)
     b1.plot(f, h.real * 1e6)
     b1.set_ylabel("real part [um/N]")
-    b1.set_title("Receptance " + label)
+    b1.set_title("Receptance " + _frf_label(r))
     b1.grid(True, alpha=0.3)
     b2.plot(f, h.imag * 1e6)
     b2.set_ylabel("imaginary part [um/N]")
     b2.set_xlabel("frequency [Hz]")
     b2.grid(True, alpha=0.3)
-    return p1, save_figure(fixed_layout(fig), path_reim)
+    return fixed_layout(fig)
 
 
-def plot_unbalance(r: UnbalanceResult, path: Path) -> Path:
+def unbalance_figure(r: UnbalanceResult):
     fig = new_figure(8, 6)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     node = r.output_node - 1
@@ -212,4 +217,4 @@ def plot_unbalance(r: UnbalanceResult, path: Path) -> Path:
     a2.set_ylabel("phase [deg]")
     a2.set_xlabel("speed [rpm]")
     a2.grid(True, alpha=0.3)
-    return save_figure(fig, path)
+    return fig

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 from ..deck.loader import ANALYSES, LoadedDeck
+from ..output import drawing
 from ..output.hdf5 import RunInfo
 
 Progress = Callable[[int, int], None] | None
@@ -51,13 +52,26 @@ def run_info_for(loaded: LoadedDeck, command_line: str | None = None) -> RunInfo
 
 def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dict[str, Any] | None = None,
                  progress: Progress = None, run: RunInfo | None = None) -> list[Path]:
-    """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths."""
+    """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths.
+
+    Every file is on disk when it returns, figures drawn by a figure process included (they are
+    waited for; a failed figure raises here, a failed or interrupted run cancels the ones not started)."""
     if name not in RUNS:
         raise KeyError(f"unknown analysis {name!r}; known: {', '.join(RUNS)}")
     module, function = RUNS[name]
     fn = getattr(importlib.import_module(f"{__name__}.{module}"), function)
-    importlib.import_module(f"{__name__}.status").remove_stale_temporaries(outdir)  # a killed run's *.tmp
-    return fn(loaded, Path(outdir), run or run_info_for(loaded), options or {}, progress)
+    status = importlib.import_module(f"{__name__}.status")
+    status.remove_stale_temporaries(outdir)  # a killed run's *.tmp
+    try:
+        paths = fn(loaded, Path(outdir), run or run_info_for(loaded), options or {}, progress)
+    except status.IncompleteRun:  # its files, figures included, are written: marked incomplete
+        drawing.wait()
+        raise
+    except BaseException:
+        drawing.abandon()
+        raise
+    drawing.wait()
+    return paths
 
 
 def default_analyses(loaded: LoadedDeck) -> list[str]:

@@ -115,25 +115,32 @@ def _for_simulation(tool):
 
 
 def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> list[Path]:
-    from ..chatter.plots import frf_figure, lobe_diagram_figure, simulation_figure, stability_map_figure
-    from ..chatter.state_space import ToolPointModel
+    from ..chatter.plots import frf_figure, simulation_figure, stability_map_figure
     from ..output.chatter_writer import write_chatter
-    from ..output.figures import save_figure
+    from ..output.drawing import draw
 
     paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, tool, deck_tool, info)]
     dg = result.diagram
-    fig = lobe_diagram_figure(dg, simulations=result.simulations)
+    paths.append(draw(outdir / "chatter_lobes.png", lobes_figure, dg, result.simulations, at_deck,
+                      info.get("deck_speed_rpm")))
+    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
+    if shown is not None:
+        paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
+    if dg.stability_map is not None:
+        paths.append(draw(outdir / "chatter_stability_map.png", stability_map_figure, dg))
+    for k, sim in enumerate(result.simulations):
+        paths.append(draw(outdir / f"chatter_simulation_{k + 1}.png", simulation_figure, sim))
+    return paths
+
+
+def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None):
+    """The lobe diagram; with ``at_deck`` (the lobes from the FRF at the deck speed) drawn over it, dashed."""
+    from ..chatter.plots import lobe_diagram_figure
+
+    fig = lobe_diagram_figure(diagram, simulations=simulations)
     if at_deck is not None:
         ax = fig.axes[0]
         ax.plot(at_deck.speed_rpm, 1e3 * at_deck.limit_depth_m, color="0.35", lw=1.1, ls="--",
-                label=f"FRF at the deck speed ({info['deck_speed_rpm']:g} rpm)")
+                label=f"FRF at the deck speed ({deck_speed_rpm:g} rpm)")
         ax.legend(loc="upper left", fontsize="small")
-    paths.append(save_figure(fig, outdir / "chatter_lobes.png"))
-    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
-    if shown is not None:
-        paths.append(save_figure(frf_figure(shown, terms=("xx", "yy", "xy")), outdir / "chatter_frf.png"))
-    if dg.stability_map is not None:
-        paths.append(save_figure(stability_map_figure(dg), outdir / "chatter_stability_map.png"))
-    for k, sim in enumerate(result.simulations):
-        paths.append(save_figure(simulation_figure(sim), outdir / f"chatter_simulation_{k + 1}.png"))
-    return paths
+    return fig

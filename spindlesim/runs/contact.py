@@ -96,7 +96,7 @@ def run_contact(loaded: Any, outdir: Path, run: Any, options: dict | None = None
                 progress: Any = None) -> list[Path]:
     """Solve the deck's ``contact:`` section; write contact.h5 and two PNGs into ``outdir``."""
     from ..contact.plots import pressure_map_figure, roller_profile_figure
-    from ..output.figures import save_figure
+    from ..output.drawing import draw
 
     sec = getattr(loaded.deck, "contact", None)
     if sec is None:
@@ -106,7 +106,7 @@ def run_contact(loaded: Any, outdir: Path, run: Any, options: dict | None = None
         progress(1, 1)
     outdir = Path(outdir)
     paths = [write_contact(outdir / "contact.h5", run, res)]
-    paths.append(save_figure(pressure_map_figure(res), outdir / "contact_pressure.png"))
+    paths.append(draw(outdir / "contact_pressure.png", pressure_map_figure, res))
     if sec.ball is None:
-        paths.append(save_figure(roller_profile_figure(res), outdir / "contact_roller.png"))
+        paths.append(draw(outdir / "contact_roller.png", roller_profile_figure, res))
     return paths

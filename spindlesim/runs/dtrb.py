@@ -31,7 +31,7 @@ def _range(r) -> np.ndarray:
 def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, progress=None) -> list[Path]:
     from ..bearings.dtrb.plots import plot_load_distribution, plot_stiffness_sweep
     from ..bearings.dtrb.section import geometry_from
-    from ..output.figures import save_figure
+    from ..output.drawing import draw
 
     sec = loaded.deck.dtrb
     if sec is None:
@@ -101,17 +101,15 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
     from ..output.hdf5 import write_h5
 
     paths = [write_h5(outdir / "dtrb.h5", run, datasets, group_attrs)]
-    figures.append(save_figure(plot_load_distribution(polar), outdir / "dtrb_load_distribution.png"))
+    figures.append(draw(outdir / "dtrb_load_distribution.png", plot_load_distribution, polar))
     if "preload_sweep" in sweeps:
-        figures.append(save_figure(plot_stiffness_sweep(
-            sweeps["preload_sweep"], [(0, 0, "KXX"), (2, 2, "KZZ")], 1e6, "preload delta0 [um]",
-            f"Direct stiffness against preload (load {_load_text(load)}; seed 001 Fig. 8)"),
-            outdir / "dtrb_stiffness_preload.png"))
+        figures.append(draw(outdir / "dtrb_stiffness_preload.png", plot_stiffness_sweep,
+                            sweeps["preload_sweep"], [(0, 0, "KXX"), (2, 2, "KZZ")], 1e6, "preload delta0 [um]",
+                            f"Direct stiffness against preload (load {_load_text(load)}; seed 001 Fig. 8)"))
     if "radial_sweep" in sweeps:
-        figures.append(save_figure(plot_stiffness_sweep(
-            sweeps["radial_sweep"], [(0, 0, "KXX")], 1e-3, "radial load FX [kN]",
-            f"KXX against radial load (delta0 = {preload * 1e6:g} um; seed 001 Fig. 10)"),
-            outdir / "dtrb_stiffness_radial.png"))
+        figures.append(draw(outdir / "dtrb_stiffness_radial.png", plot_stiffness_sweep,
+                            sweeps["radial_sweep"], [(0, 0, "KXX")], 1e-3, "radial load FX [kN]",
+                            f"KXX against radial load (delta0 = {preload * 1e6:g} um; seed 001 Fig. 10)"))
     return paths + figures
 
 

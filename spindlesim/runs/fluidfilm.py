@@ -83,7 +83,7 @@ def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None
                 progress: Any = None) -> list[Path]:
     """Thermal equilibrium of every fluid-film bearing; thermal.h5 and pressure PNGs."""
     from ..bearings.fluidfilm.plots import pressure_figure
-    from ..output.figures import save_figure
+    from ..output.drawing import draw
     from ..output.hdf5 import Data, labels, write_h5
 
     results, om = _analyze_all(loaded, options or {}, progress)
@@ -121,8 +121,7 @@ def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None
                     "node": b.node + 1, "housing_conductance_W_K": r.housing_conductance_W_K}
     paths = [write_h5(Path(outdir) / "thermal.h5", run, ds, attrs)]
     for b, r in results:
-        paths.append(save_figure(pressure_figure(r.film, f"{b.name}"),
-                                 Path(outdir) / f"thermal_pressure_{b.name}.png"))
+        paths.append(draw(Path(outdir) / f"thermal_pressure_{b.name}.png", pressure_figure, r.film, f"{b.name}"))
     return paths
 
 
@@ -131,7 +130,7 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
     """Eight coefficients at the thermal equilibrium; coefficients.h5 and characteristic charts."""
     from ..bearings.fluidfilm.performance import characteristic_curves
     from ..bearings.fluidfilm.plots import characteristics_figure
-    from ..output.figures import save_figure
+    from ..output.drawing import draw
     from ..output.hdf5 import Data, labels, write_h5
 
     results, om = _analyze_all(loaded, options or {}, progress)
@@ -164,8 +163,7 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
         S0 = r.film.sommerfeld
         curves = characteristic_curves(b.geometry, S0 * np.logspace(-1.5, 1.5, 19),
                                        b.n_circ, b.n_axial)
-        fig = characteristics_figure(curves, f"{b.name}: L/D {b.geometry.l_over_d:.3g}, "
-                                             f"mp {b.geometry.preload:.3g}; operating S = {S0:.3g}",
-                                     mark_S=S0)
-        paths.append(save_figure(fig, Path(outdir) / f"coefficients_{b.name}.png"))
+        paths.append(draw(Path(outdir) / f"coefficients_{b.name}.png", characteristics_figure, curves,
+                          f"{b.name}: L/D {b.geometry.l_over_d:.3g}, mp {b.geometry.preload:.3g}; operating S = {S0:.3g}",
+                          mark_S=S0))
     return paths

@@ -10,6 +10,7 @@ import numpy as np
 from ..deck.document import NodeDof
 from ..deck.loader import require_rotor
 from ..model.build import build_rotor
+from ..output.drawing import draw
 from .common import first, plots_wanted, value_range
 
 log = logging.getLogger(__name__)
@@ -17,7 +18,7 @@ log = logging.getLogger(__name__)
 
 def run_static(loaded, outdir, run, opts, progress):
     from ..analysis.static import solve_static
-    from ..output.rotor_plots import plot_static
+    from ..output.rotor_plots import static_figure
     from ..output.rotor_writers import write_static
 
     require_rotor(loaded, "static")
@@ -28,13 +29,13 @@ def run_static(loaded, outdir, run, opts, progress):
     log.info("static stiffness at node %d %s: %.4g N/um", at.node, at.dof, res.static_stiffness_N_m / 1e6)
     paths = [write_static(outdir / "static.h5", run, res)]
     if plots_wanted(opts):
-        paths.append(plot_static(res, outdir / "static_deflection.png"))
+        paths.append(draw(outdir / "static_deflection.png", static_figure, res))
     return paths
 
 
 def run_modal(loaded, outdir, run, opts, progress):
     from ..analysis.modal import solve_modal
-    from ..output.rotor_plots import plot_modes
+    from ..output.rotor_plots import modes_figure
     from ..output.rotor_writers import write_modal
 
     require_rotor(loaded, "modal")
@@ -48,13 +49,13 @@ def run_modal(loaded, outdir, run, opts, progress):
         for b in rotor.bearings:
             at.setdefault(float(rotor.node_z_m[b.node]), b.name)
         bearings = tuple((name, z) for z, name in at.items())
-        paths.append(plot_modes(res, outdir / "modal_shapes.png", bearings=bearings))
+        paths.append(draw(outdir / "modal_shapes.png", modes_figure, res, bearings=bearings))
     return paths
 
 
 def run_campbell(loaded, outdir, run, opts, progress):
     from ..analysis.campbell import solve_campbell
-    from ..output.rotor_plots import plot_campbell, plot_campbell_frozen
+    from ..output.rotor_plots import campbell_figure, campbell_frozen_figure
     from ..output.rotor_writers import write_campbell
 
     require_rotor(loaded, "campbell")
@@ -72,9 +73,9 @@ def run_campbell(loaded, outdir, run, opts, progress):
         run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
     paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm)]
     if plots_wanted(opts):
-        paths.append(plot_campbell(res, outdir / "campbell.png", operating_rpm=d.operating.speed_rpm or None))
+        paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None))
         if frozen is not None:
-            paths.append(plot_campbell_frozen(res, frozen, frozen_rpm, outdir / "campbell_frozen.png"))
+            paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, frozen, frozen_rpm))
     if res.incomplete_reason:
         from .status import IncompleteRun
 
@@ -84,7 +85,7 @@ def run_campbell(loaded, outdir, run, opts, progress):
 
 def run_frf(loaded, outdir, run, opts, progress):
     from ..analysis.frf import solve_frf
-    from ..output.rotor_plots import plot_frf
+    from ..output.rotor_plots import frf_magnitude_phase_figure, frf_real_imag_figure
     from ..output.rotor_writers import write_frf
 
     require_rotor(loaded, "frf")
@@ -102,19 +103,19 @@ def run_frf(loaded, outdir, run, opts, progress):
         tool = tool_point_model(rotor).frf(f)
     paths = [write_frf(outdir / "frf.h5", run, res, tool)]
     if plots_wanted(opts):
-        paths += list(plot_frf(res, outdir / "frf_magnitude_phase.png", outdir / "frf_real_imag.png"))
+        paths.append(draw(outdir / "frf_magnitude_phase.png", frf_magnitude_phase_figure, res))
+        paths.append(draw(outdir / "frf_real_imag.png", frf_real_imag_figure, res))
         if tool is not None:
             from ..chatter.plots import frf_figure
-            from ..output.figures import save_figure
 
-            paths.append(save_figure(frf_figure(tool, terms=("xx", "yy", "xy"), title=f"Tool point (node {tip}) at "
-                                                f"{rotor.speed_rpm:g} rpm"), outdir / "frf_tool_point.png"))
+            paths.append(draw(outdir / "frf_tool_point.png", frf_figure, tool, terms=("xx", "yy", "xy"),
+                              title=f"Tool point (node {tip}) at {rotor.speed_rpm:g} rpm"))
     return paths
 
 
 def run_unbalance(loaded, outdir, run, opts, progress):
     from ..analysis.frf import solve_unbalance
-    from ..output.rotor_plots import plot_unbalance
+    from ..output.rotor_plots import unbalance_figure
     from ..output.rotor_writers import write_unbalance
 
     require_rotor(loaded, "unbalance")
@@ -127,5 +128,5 @@ def run_unbalance(loaded, outdir, run, opts, progress):
                           u.output.node, u.output.dof)
     paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
     if plots_wanted(opts):
-        paths.append(plot_unbalance(res, outdir / "unbalance.png"))
+        paths.append(draw(outdir / "unbalance.png", unbalance_figure, res))
     return paths

@@ -5,18 +5,23 @@ operating point."""
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 
 from .results import BallState, BallSweep
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 COLORS = ("tab:blue", "tab:red", "tab:green", "tab:purple")
 STIFFNESS_TERMS = ((0, 0, "K_xx", 1e-6, "N/um"), (2, 2, "K_zz", 1e-6, "N/um"), (3, 3, "K_theta_x", 1.0, "N m/rad"))
 
 
 def _figure(w: float, h: float) -> Figure:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
     fig = Figure(figsize=(w, h), layout="constrained")
     FigureCanvasAgg(fig)
     return fig

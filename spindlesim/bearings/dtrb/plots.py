@@ -5,18 +5,22 @@ Plots only draw results; nothing here computes physics.
 
 from __future__ import annotations
 
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
 
 from .results import DtrbState, DtrbSweep
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 ROW_STYLE = (("tab:blue", "row 1 (Z < 0)"), ("tab:red", "row 2 (Z > 0)"))
 
 
 def _figure(w: float, h: float) -> Figure:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
     fig = Figure(figsize=(w, h), layout="constrained")
     FigureCanvasAgg(fig)
     return fig
