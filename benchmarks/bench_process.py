@@ -8,7 +8,11 @@ single-threaded BLAS).
 
 The commands are timed on the default deck (embedded ``spindle``: seed 003, 3-lobe fluid-film
 bearings at thermal equilibrium) and on the linear-bearing deck of the same spindle
-(decks/seed003_spindle_linear.yaml), each with -o to a temporary directory.
+(decks/seed003_spindle_linear.yaml), each with -o to a temporary directory; on the linear deck
+also with SPINDLESIM_FIGURE_PROCESS=0 (figures drawn in the main process, spindlesim/output/drawing.py),
+to show what the figure process brings.  spindlesim's modules are byte-compiled first, as an
+installed package's are (an editable install under PYTHONDONTWRITEBYTECODE=1 would otherwise
+compile them again in every process, about 50 ms).
 
 Then, to show where the time goes:
 * ``python -X importtime -c "import spindlesim.cli"`` and the imports of each command (top entries);
@@ -79,17 +83,18 @@ def _child_cpu() -> float:
     return ru.ru_utime + ru.ru_stime
 
 
-def time_process(argv: list[str], outdir: pathlib.Path, runs: int, warmup: int = 1):
+def time_process(argv: list[str], outdir: pathlib.Path, runs: int, warmup: int = 1, env: dict | None = None):
     """(median wall seconds, min, max, median CPU seconds (user + sys), exit code, stderr tail).
 
-    The CPU time is the kernel's account of the finished child: on a shared, loaded machine it is
-    the steadier figure (the wall time includes waiting for a core)."""
+    The CPU time is the kernel's account of the finished child and its children (the figure
+    process included): on a shared, loaded machine it is the steadier figure (the wall time includes
+    waiting for a core)."""
     times, cpus, rc, err = [], [], 0, ""
     for i in range(warmup + runs):
         shutil.rmtree(outdir, ignore_errors=True)
         c = _child_cpu()
         t = time.perf_counter()
-        r = subprocess.run(argv + [str(outdir)], env=ENV, cwd=ROOT, capture_output=True, text=True)
+        r = subprocess.run(argv + [str(outdir)], env=env or ENV, cwd=ROOT, capture_output=True, text=True)
         dt = time.perf_counter() - t
         dc = _child_cpu() - c
         rc, err = r.returncode, r.stderr.strip().splitlines()[-1:] if r.stderr.strip() else []
@@ -156,6 +161,8 @@ def main() -> int:
     a = ap.parse_args()
 
     exe = spindlesim_exe()
+    subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "spindlesim")], check=True,
+                   capture_output=True)
     commands = [("modal", ["modal"]), ("campbell --speeds 0:12000:50", ["campbell", "--speeds", "0:12000:50"]),
                 ("frf", ["frf"])]
     decks = []
@@ -176,19 +183,23 @@ def main() -> int:
         if floor[0] is None:
             print(f"stack floor script failed: {floor[5]}")
             return 1
-        print(f"\n{'case':56s} {'wall med':>8s} {'min':>6s} {'max':>6s} {'/floor':>6s} {'cpu med':>8s} "
+        print(f"\n{"case":66s} {'wall med':>8s} {'min':>6s} {'max':>6s} {'/floor':>6s} {'cpu med':>8s} "
               f"{'/floor':>6s}  ok (wall <= {TARGET}x)")
-        print(f"{'stack floor (numpy, scipy.linalg, h5py, mpl; .h5 + .png)':56s} "
+        print(f"{"stack floor (numpy, scipy.linalg, h5py, mpl; .h5 + .png)":66s} "
               f"{floor[0]:8.3f} {floor[1]:6.2f} {floor[2]:6.2f} {1.0:6.2f} {floor[3]:8.3f} {1.0:6.2f}")
-        for deck_name, deck_arg in decks:
+        cases = [(d, arg, "") for d, arg in decks]
+        if a.deck_set in ("linear", "both"):
+            cases.append(("linear", [str(LINEAR_DECK)], "0"))
+        for deck_name, deck_arg, figure_process in cases:
             for name, args in commands:
-                label = f"spindlesim {name}  [{deck_name}]"
-                med, lo, hi, cpu, rc, err = time_process(exe + args + deck_arg + ["-o"], tmp / "cmd", a.runs)
+                label = f"spindlesim {name}  [{deck_name}{', figures in-process' if figure_process else ''}]"
+                env = dict(ENV, SPINDLESIM_FIGURE_PROCESS=figure_process) if figure_process else ENV
+                med, lo, hi, cpu, rc, err = time_process(exe + args + deck_arg + ["-o"], tmp / "cmd", a.runs, env=env)
                 if med is None:
-                    print(f"{label:56s} {'FAILED':>8s}  exit {rc}: {err[:100]}")
+                    print(f"{label:66s} {'FAILED':>8s}  exit {rc}: {err[:100]}")
                     continue
                 ratio = med / floor[0]
-                print(f"{label:56s} {med:8.3f} {lo:6.2f} {hi:6.2f} {ratio:6.2f} {cpu:8.3f} {cpu / floor[3]:6.2f}  "
+                print(f"{label:66s} {med:8.3f} {lo:6.2f} {hi:6.2f} {ratio:6.2f} {cpu:8.3f} {cpu / floor[3]:6.2f}  "
                       f"{'yes' if ratio <= TARGET else 'NO'}")
 
         if a.no_profile:
