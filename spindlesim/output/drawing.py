@@ -102,7 +102,7 @@ def figure_process(enabled: bool = True) -> Iterator[bool]:
         executor = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"),
                                        initializer=_start_child, initargs=(os.getpid(),))
         executor.submit(int)  # makes the child now (fork), before this process starts any thread
-    except OSError as exc:  # no process to spare: draw here
+    except (OSError, ImportError) as exc:  # no process to spare, no POSIX semaphores (/dev/shm): draw here
         log.info("no figure process (%s); figures are drawn in the main process", exc)
         yield False
         return
