@@ -3,8 +3,9 @@
 Deck: embedded ``spindle`` (= decks/seed003_three_lobe.yaml), 60 speeds 200..12000 rpm (a
 hydrodynamic film needs a positive speed, so the sweep cannot start at 0 rpm).  At every speed
 ``solve_campbell`` finds the static equilibrium with each bearing at its thermal equilibrium
-(``static_states`` -> ``operating_state`` -> bearing ``analyze`` -> ``solve_thermal``: a bracket
-and Brent search on the film temperature, each trial one isoviscous journal equilibrium =
+(``static_states`` -> ``operating_state`` -> bearing ``analyze`` -> ``solve_thermal``: secant steps
+on the film temperature from the previous speed, a bracket and Brent's method without one or when
+they do not settle, each trial one isoviscous journal equilibrium =
 Reynolds solves + 8 coefficients), then the damped modes of every speed.
 
 Target: under 2 s.  Reported:

@@ -183,9 +183,9 @@ def main() -> int:
         if floor[0] is None:
             print(f"stack floor script failed: {floor[5]}")
             return 1
-        print(f"\n{"case":66s} {'wall med':>8s} {'min':>6s} {'max':>6s} {'/floor':>6s} {'cpu med':>8s} "
+        print(f"\n{'case':66s} {'wall med':>8s} {'min':>6s} {'max':>6s} {'/floor':>6s} {'cpu med':>8s} "
               f"{'/floor':>6s}  ok (wall <= {TARGET}x)")
-        print(f"{"stack floor (numpy, scipy.linalg, h5py, mpl; .h5 + .png)":66s} "
+        print(f"{'stack floor (numpy, scipy.linalg, h5py, mpl; .h5 + .png)':66s} "
               f"{floor[0]:8.3f} {floor[1]:6.2f} {floor[2]:6.2f} {1.0:6.2f} {floor[3]:8.3f} {1.0:6.2f}")
         cases = [(d, arg, "") for d, arg in decks]
         if a.deck_set in ("linear", "both"):

@@ -125,3 +125,47 @@ def test_start_from_a_neighbour_gives_the_same_equilibrium_in_fewer_films(seed_r
     np.testing.assert_allclose(warm.film.K_N_m, cold.film.K_N_m, rtol=1e-6, atol=1e-6 * np.abs(cold.film.K_N_m).max())
     assert warm.iterations < cold.iterations
     assert cold.temperature_mean_C == pytest.approx(seed_result.temperature_mean_C, abs=1e-5)
+
+
+def test_secant_search_along_speeds_matches_the_cold_search_in_three_films():
+    """Speed by speed as in a Campbell diagram (2 % steps): each search starts at the temperature
+    extrapolated from the two previous equilibria with the previous balance slope (secant steps).
+    Each root equals the cold bracket-and-Brent search's (1e-6 degC tolerance) and takes three film
+    solutions after the first two speeds (the bracket and Brent's method took five per speed in the
+    60-speed Campbell benchmark; the secant steps take 3.1)."""
+    from spindlesim.bearings.fluidfilm.thermal import solve_thermal
+
+    b = seed_bearing()
+    load = np.array([0.0, -400.0])
+    speeds = OMEGA * np.linspace(0.9, 1.1, 11)
+    before, films = [], []
+    for w in speeds:
+        guess = None
+        if len(before) == 2:
+            (a, c) = before
+            guess = c.temperature_mean_C + (w - c.film.speed_rad_s) / (c.film.speed_rad_s - a.film.speed_rad_s) * (
+                c.temperature_mean_C - a.temperature_mean_C)
+        r = solve_thermal(b.solver, b.viscosity, w, load, b.thermal, near=before[-1] if before else None, guess_C=guess)
+        cold = solve_thermal(b.solver, b.viscosity, w, load, b.thermal)
+        assert abs(r.temperature_mean_C - cold.temperature_mean_C) < 2e-6
+        np.testing.assert_allclose(r.film.K_N_m, cold.film.K_N_m, rtol=1e-6, atol=1e-6 * np.abs(cold.film.K_N_m).max())
+        films.append(r.iterations)
+        assert r.balance_slope < 0 if before else True
+        before = (before[-1], r) if before else [r]
+    assert max(films[2:]) <= 3, films
+
+
+def test_a_secant_search_that_does_not_settle_hands_over_to_the_bracket():
+    """A neighbour's balance slope far too shallow (-1e-4 instead of about -1) sends the first secant
+    step out of the temperature range: the bracket and Brent's method find the root all the same."""
+    import dataclasses
+
+    from spindlesim.bearings.fluidfilm.thermal import solve_thermal
+
+    b = seed_bearing()
+    load = np.array([0.0, -400.0])
+    cold = solve_thermal(b.solver, b.viscosity, OMEGA, load, b.thermal)
+    misleading = dataclasses.replace(cold, balance_slope=-1e-4)
+    warm = solve_thermal(b.solver, b.viscosity, 1.05 * OMEGA, load, b.thermal, near=misleading)
+    ref = solve_thermal(b.solver, b.viscosity, 1.05 * OMEGA, load, b.thermal)
+    assert abs(warm.temperature_mean_C - ref.temperature_mean_C) < 2e-6

@@ -70,3 +70,6 @@ class ThermalResult:
     isoviscous: bool
     iterations: int
     film: FilmResult
+    #: dg/dtheta at the equilibrium, g(theta) = balance temperature - trial temperature (negative; NaN when
+    #: not measured): the first step of the next search from a neighbouring state
+    balance_slope: float = field(default=float("nan"), compare=False)

@@ -119,10 +119,12 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     ``viscosity`` is a callable temperature [degC] -> Pa s (:mod:`viscosity`); a
     :class:`ConstantViscosity` gives an isoviscous film whose temperatures follow from
     eq. 12 without feedback.  ``near`` is the equilibrium of a neighbouring state (the previous
-    speed of a Campbell diagram): its temperature brackets the root in two or three film solutions
-    and its journal position and film start the first one (``guess_C``, a better first temperature, e.g.
-    extrapolated from two neighbours).  The root is found to ``xtol`` degC
-    either way (1e-6 degC: the result does not depend on where the search started).
+    speed of a Campbell diagram): the search starts at its temperature (or at ``guess_C``, e.g.
+    extrapolated from two neighbours) with secant steps from its balance slope, usually three film
+    solutions, and its journal position and film start the first one; a secant search that does not
+    settle hands over to a bracket and Brent's method, as does a search without a neighbour.  The
+    root is found to ``xtol`` degC either way (1e-6 degC: the result does not depend on where the
+    search started).
     """
     geo = solver.geometry
     aA = params.conductance(geo)
@@ -154,10 +156,15 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     def g(theta: float) -> float:
         return _balance(params, aA, film_at(theta))[0] - theta
 
-    bracket = None if near is None else _near_bracket(g, near.temperature_mean_C if guess_C is None else guess_C)
-    if bracket is not None:
-        theta = bracket[0] if bracket[0] == bracket[1] else brentq(g, *bracket, xtol=xtol, rtol=1e-12)
-        return _result(params, aA, film_at(theta), state["n"])
+    if near is not None:
+        theta0 = near.temperature_mean_C if guess_C is None else guess_C
+        found = _secant_root(g, theta0, near.balance_slope, xtol)
+        if found is not None:
+            return _result(params, aA, film_at(found[0]), state["n"], found[1])
+        bracket = _near_bracket(g, theta0)
+        if bracket is not None:
+            theta = bracket[0] if bracket[0] == bracket[1] else brentq(g, *bracket, xtol=xtol, rtol=1e-12)
+            return _result(params, aA, film_at(theta), state["n"])
     lo = min(params.inlet_C, params.ambient_C)
     try:
         glo = g(lo)
@@ -199,10 +206,42 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     return _result(params, aA, film_at(theta), state["n"])
 
 
-def _result(params: ThermalParameters, aA: float, film: FilmResult, n: int) -> ThermalResult:
+def _result(params: ThermalParameters, aA: float, film: FilmResult, n: int,
+            slope: float = float("nan")) -> ThermalResult:
     th, tho, H, H1, H2, q = _balance(params, aA, film)
     log.debug("thermal equilibrium %.6f degC after %d film solutions", th, n)
-    return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA, False, n, film)
+    return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA, False, n, film, slope)
+
+
+def _secant_root(g, theta0: float, slope: float, xtol: float, evaluations: int = 5):
+    """(root, slope) of g from ``theta0`` by secant steps, the first one along ``slope`` (a neighbouring
+    equilibrium's dg/dtheta, else -1: the balance temperature moves less than the trial one); None when
+    the steps do not settle within ``evaluations`` film solutions, leave the temperature range, or g
+    stops falling (then a bracket and Brent's method decide).
+
+    The root is accepted when the secant's estimate of its distance, |g| / |slope|, is below ``xtol``:
+    from a neighbouring speed that takes three film solutions where scipy's secant method (which
+    stops on the step, so its last iterate still needs its film solution) or Brent's method (which
+    must shrink a bracket to ``xtol``) take four or five."""
+    s = slope if math.isfinite(slope) and slope < 0.0 else -1.0
+    try:
+        t0, g0 = theta0, g(theta0)
+        for _ in range(evaluations - 1):
+            if abs(g0 / s) <= xtol:
+                return t0, s
+            t1 = t0 - g0 / s
+            if not (-50.0 <= t1 <= MAX_TEMPERATURE_C):
+                return None
+            g1 = g(t1)
+            if t1 == t0 or g1 == g0:
+                return None
+            s = (g1 - g0) / (t1 - t0)
+            if not s < 0.0:  # g rises or is not finite: not the smooth fall a secant step relies on
+                return None
+            t0, g0 = t1, g1
+        return (t0, s) if abs(g0 / s) <= xtol else None
+    except (EquilibriumError, ReynoldsError):
+        return None
 
 
 def _near_bracket(g, theta0: float, tries: int = 4):
