@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
-from scipy.linalg import cho_solve_banded, cholesky_banded
+from scipy.linalg.lapack import dpbtrf, dpbtrs
 
 from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
 
@@ -235,6 +235,14 @@ class ReynoldsSolver:
         self._mid_theta = np.concatenate(g.land_theta_mid)
         self._mid_dth = np.concatenate(
             [np.full(m.size, d) for m, d in zip(g.land_theta_mid, g.land_dtheta)])
+        # what does not change with the journal position, computed once (a solve's hot loop):
+        # H = base - X cos(theta) - Y sin(theta), base = a - (a - 1) cos(theta - land centre)
+        self._base_cf = _film_at(geometry, g.cf_land, g.cf_theta, 0.0, 0.0)
+        self._base_af = _film_at(geometry, g.af_land, g.af_theta, 0.0, 0.0)
+        self._base_mid = _film_at(geometry, self._mid_land, self._mid_theta, 0.0, 0.0)
+        self._cos_mid, self._sin_mid = np.cos(self._mid_theta), np.sin(self._mid_theta)
+        # the faces' nodes that are unknowns (index -1: a Dirichlet boundary), for np.bincount
+        self._free = tuple((idx >= 0, idx[idx >= 0]) for idx in (cl, cr, lo, hi))
 
     # -- assembly -------------------------------------------------------------
     def _conductances(self, Hc: np.ndarray, Ha: np.ndarray):
@@ -256,14 +264,9 @@ class ReynoldsSolver:
 
     def _face_divergence(self, flux_c: np.ndarray) -> np.ndarray:
         """Net circumferential flux into each node: + from the left face, - to the right."""
-        g = self.grid
-        n = g.n_unknown
-        out = np.zeros(n)
-        m = g.cf_right >= 0
-        out += np.bincount(g.cf_right[m], weights=flux_c[m], minlength=n)
-        m = g.cf_left >= 0
-        out -= np.bincount(g.cf_left[m], weights=flux_c[m], minlength=n)
-        return out
+        n = self.grid.n_unknown
+        (ml, il), (mr, ir) = self._free[0], self._free[1]
+        return np.bincount(ir, weights=flux_c[mr], minlength=n) - np.bincount(il, weights=flux_c[ml], minlength=n)
 
     def _apply_face_operator(self, gc: np.ndarray, ga: np.ndarray, P: np.ndarray) -> np.ndarray:
         """(A(g) P) for arbitrary face weights g (used for dA/dq P)."""
@@ -271,21 +274,19 @@ class ReynoldsSolver:
         n = g.n_unknown
         Pf = np.concatenate([P, [0.0]])  # index -1 -> Dirichlet zero
         out = np.zeros(n)
-        for left, right, val in ((g.cf_left, g.cf_right, gc), (g.af_low, g.af_high, ga)):
+        cl, cr, lo, hi = self._free
+        for left, right, val, (m_l, i_l), (m_r, i_r) in ((g.cf_left, g.cf_right, gc, cl, cr),
+                                                         (g.af_low, g.af_high, ga, lo, hi)):
             d = val * (Pf[left] - Pf[right])
-            m = left >= 0
-            out += np.bincount(left[m], weights=d[m], minlength=n)
-            m = right >= 0
-            out -= np.bincount(right[m], weights=d[m], minlength=n)
+            out += np.bincount(i_l, weights=d[m_l], minlength=n)
+            out -= np.bincount(i_r, weights=d[m_r], minlength=n)
         return out
 
     def _diagonal(self, gc: np.ndarray, ga: np.ndarray) -> np.ndarray:
-        g = self.grid
-        n = g.n_unknown
+        n = self.grid.n_unknown
         diag = np.zeros(n)
-        for idx, val in ((g.cf_left, gc), (g.cf_right, gc), (g.af_low, ga), (g.af_high, ga)):
-            m = idx >= 0
-            diag += np.bincount(idx[m], weights=val[m], minlength=n)
+        for (m, idx), val in zip(self._free, (gc, gc, ga, ga)):
+            diag += np.bincount(idx, weights=val[m], minlength=n)
         return diag
 
     def _factor(self, gc: np.ndarray, ga: np.ndarray, diag: np.ndarray, inactive: np.ndarray):
@@ -311,8 +312,12 @@ class ReynoldsSolver:
             ab = np.zeros((u + 1, m))
             ab[u, :] = diag[idx]
             ab[u + i - j, j] = v
-            cb = cholesky_banded(ab, lower=False, check_finite=False)
-            return lambda rhs: cho_solve_banded((cb, False), rhs, check_finite=False)
+            # LAPACK's banded Cholesky directly: what scipy.linalg.cholesky_banded and cho_solve_banded
+            # call, without their per-call argument handling (a tenth of a warm Reynolds solve)
+            cb, info = dpbtrf(ab, lower=0)
+            if info != 0:
+                raise np.linalg.LinAlgError(f"{info}-th leading minor not positive definite")
+            return lambda rhs: dpbtrs(cb, rhs, lower=0)[0]
         A = sp.csc_matrix((np.concatenate([v, v, diag[idx]]),
                            (np.concatenate([i, j, np.arange(m)]),
                             np.concatenate([j, i, np.arange(m)]))), shape=(m, m))
@@ -337,10 +342,9 @@ class ReynoldsSolver:
     def film_heights(self, X: float, Y: float):
         """(H at the circumferential faces, H at the axial faces, H at the cell middles) at the journal
         position (X, Y) = e / Cb; ReynoldsError when the journal touches the bore."""
-        geo, g = self.geometry, self.grid
-        Hc = _film_at(geo, g.cf_land, g.cf_theta, X, Y)
-        Ha = _film_at(geo, g.af_land, g.af_theta, X, Y)
-        Hmid = _film_at(geo, self._mid_land, self._mid_theta, X, Y)
+        Hc = self._base_cf - X * self._cos_cf - Y * self._sin_cf
+        Ha = self._base_af - X * self._cos_af - Y * self._sin_af
+        Hmid = self._base_mid - X * self._cos_mid - Y * self._sin_mid
         hmin = float(min(Hc.min(), Hmid.min()))
         if hmin <= 0.0:
             raise ReynoldsError(f"journal position X={X:.4f}, Y={Y:.4f} (e/Cb {math.hypot(X, Y):.4f}) touches "
