@@ -38,19 +38,18 @@ def state_matrix(sysm: SystemMatrices) -> np.ndarray:
     return A
 
 
-def whirl_of(shape_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[str, float]:
-    """Classify a mode from its complex (x, y) amplitudes [node, 2]."""
-    fwd = np.abs(shape_xy[:, 0] + 1j * shape_xy[:, 1])
-    bwd = np.abs(shape_xy[:, 0] - 1j * shape_xy[:, 1])
+def whirl_of(shapes_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[list[str], np.ndarray]:
+    """Classify modes from their complex (x, y) amplitudes [mode, node, 2]: ("forward" / "backward" /
+    "mixed" per mode, share of the moving nodes that whirl forward)."""
+    x, y = shapes_xy[..., 0], shapes_xy[..., 1]
+    fwd = np.abs(x + 1j * y)
+    bwd = np.abs(x - 1j * y)
     size = np.maximum(fwd, bwd)
-    active = size > rel_floor * size.max()
-    is_fwd = fwd[active] >= bwd[active]
-    share = float(is_fwd.mean()) if active.any() else 0.5
-    if share == 1.0:
-        return "forward", share
-    if share == 0.0:
-        return "backward", share
-    return "mixed", share
+    active = size > rel_floor * size.max(axis=-1, keepdims=True)
+    n_active = active.sum(axis=-1)
+    share = np.where(n_active > 0, (active & (fwd >= bwd)).sum(axis=-1) / np.maximum(n_active, 1), 0.5)
+    names = ["forward" if s == 1.0 else "backward" if s == 0.0 else "mixed" for s in share]
+    return names, share
 
 
 def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_modes: int,
@@ -81,8 +80,10 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     ref = trans[np.arange(len(order)), np.argmax(np.abs(trans), axis=1)]
     shapes = shapes / ref[:, None, None]
     lateral = np.max(np.abs(shapes[:, :, :2]).reshape(len(order), -1), axis=1) if len(order) else np.zeros(0)
-    whirls, shares = zip(*(("axial", 0.5) if lat < AXIAL_SHARE else whirl_of(s[:, :2])
-                           for s, lat in zip(shapes, lateral))) if len(order) else ((), ())
+    whirls, shares = whirl_of(shapes[:, :, :2])
+    axial_mode = lateral < AXIAL_SHARE
+    whirls = ["axial" if ax else w for w, ax in zip(whirls, axial_mode)]
+    shares = np.where(axial_mode, 0.5, shares)
     zeta = -lam_m.real / np.abs(lam_m)
     return ModalResult(
         speed_rpm=speed_rpm, eigenvalues=lam_m, frequency_hz=lam_m.imag / (2 * np.pi),
