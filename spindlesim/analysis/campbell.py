@@ -173,14 +173,22 @@ def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, stat
     def one(k: int):
         return modal_from_matrices(matrices[k](), rotor.dofs, rotor.node_z_m, n_modes, speeds[k], expand)
 
+    def chunk(ks):
+        return [one(k) for k in ks]
+
     def results():
-        # threads pay off on full models; a small reduced eigenproblem (~0.5 ms) costs less than a hand-off
-        workers = 1 if expand is not None and expand.shape[1] <= 100 else min(len(speeds), os.cpu_count() or 1)
+        # a small reduced eigenproblem (~0.5 ms) costs less than handing it to a thread: the threads then
+        # take contiguous runs of speeds (one hand-off each); a full model's speeds go one by one
+        workers = min(len(speeds), os.cpu_count() or 1)
         if workers <= 1:
             yield from (one(k) for k in range(len(speeds)))
             return
         with ThreadPoolExecutor(max_workers=workers) as ex:
-            yield from ex.map(one, range(len(speeds)))
+            if expand is not None and expand.shape[1] <= 100:
+                for part in ex.map(chunk, np.array_split(np.arange(len(speeds)), workers)):
+                    yield from part
+            else:
+                yield from ex.map(one, range(len(speeds)))
 
     return model, results()
 

@@ -122,7 +122,10 @@ def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
     if np.all(np.isfinite(piv)) and piv.min() > 1e-11 * piv.max():
         return sla.lu_solve(lu, r, check_finite=False)
     q = np.linalg.lstsq(K, r, rcond=1e-11)[0]
-    if np.linalg.norm(K @ q - r) <= 1e-9 * max(float(np.linalg.norm(r)), 1e-300) or not np.any(r):
+    res = (K @ q - r).reshape(len(r), -1)  # each right-hand side on its own
+    rr = np.asarray(r).reshape(len(r), -1)
+    if all(np.linalg.norm(res[:, k]) <= 1e-9 * max(float(np.linalg.norm(rr[:, k])), 1e-300) or not np.any(rr[:, k])
+           for k in range(rr.shape[1])):
         return q
     raise SingularRotorError(f"the stiffness matrix of {what} is singular: the rotor is not held against "
                              "rigid-body motion in the direction of its loads (the bearings must support x and y "
@@ -198,9 +201,10 @@ def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None):
         K[np.ix_(i, i)] += kb
         r[i] += kb @ d[: len(i)] - w
         internal.append(np.asarray(d[len(i):], float))
-    what = "the rotor on its linearised bearings"
-    _solve(K, Q, what)  # the loads themselves must be carried (raises when a direction is not held)
-    return _solve(K, r, what), internal, K, coef
+    # one factorisation for both: the loads themselves must be carried (raises when a direction is not
+    # held), and the start
+    q = _solve(K, np.column_stack([Q, r]), "the rotor on its linearised bearings")[:, 1]
+    return q, internal, K, coef
 
 
 def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_diag):
