@@ -153,12 +153,20 @@ def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], No
 API684_MIN_AF = 2.5
 
 
+def usable_cores() -> int:
+    """The cores this process may run on (its CPU affinity where the platform says, e.g. under taskset)."""
+    import os
+
+    if hasattr(os, "sched_getaffinity"):
+        return max(len(os.sched_getaffinity(0)), 1)
+    return os.cpu_count() or 1
+
+
 def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, states,
                      exact: bool = False, n_check: int | None = None):
     """(description of the model used, iterator over the modal results at every speed).  The speeds
     are solved on all cores (LAPACK releases the GIL; each thread uses single-threaded BLAS) and
     yielded in speed order for the sequential mode tracking."""
-    import os
     from concurrent.futures import ThreadPoolExecutor
 
     expand, model = None, "full state space"
@@ -179,7 +187,7 @@ def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, stat
     def results():
         # a small reduced eigenproblem (~0.5 ms) costs less than handing it to a thread: the threads then
         # take contiguous runs of speeds (one hand-off each); a full model's speeds go one by one
-        workers = min(len(speeds), os.cpu_count() or 1)
+        workers = min(len(speeds), usable_cores())
         if workers <= 1:
             yield from (one(k) for k in range(len(speeds)))
             return

@@ -155,7 +155,7 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
         K_lin = None
     else:
         loads, q, internal = list(start.operating_loads), start.q.copy(), [z.copy() for z in start.internal]
-        K_lin = system_matrices(rotor, state=start).K
+        K_lin = None  # the first pass starts affinely with the neighbour's coefficients, which sets it
     coef = None
     total = 0
     frozen = None
