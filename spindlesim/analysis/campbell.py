@@ -21,8 +21,9 @@ import numpy as np
 from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
 from .modal import modal_from_matrices
-from .operating import RPM, operating_state, system_matrices
-from .reduced import checked_basis
+from .operating import RPM, OperatingState, operating_state, system_matrices
+from .prefetch import ModalPrefetch
+from .reduced import checked_basis, first_basis
 from .results import CampbellResult
 
 log = logging.getLogger(__name__)
@@ -64,6 +65,14 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     speed, or with ``frozen_rpm`` held at their coefficients of that speed (gyroscopics still vary).
     The modes come from the reduced model (``reduced``), or with ``exact`` from the full state-space
     QR solution at every speed."""
+    guess = _Guess(rotor, n_modes + max(4, n_modes // 2))
+    try:
+        return _campbell(rotor, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess)
+    finally:
+        guess.cancel()  # a failure or Ctrl-C before the prefetched modes were used: stop their thread
+
+
+def _campbell(rotor, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess) -> CampbellResult:
     speeds = np.asarray(speeds_rpm, float)
     shaft = assemble_shaft(rotor)
     total = 2 * len(speeds) if frozen_rpm is None else len(speeds)
@@ -75,22 +84,25 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
             progress(done[0], total)
 
     states, stopped = None, ""
+    guess.shaft = shaft
     if frozen_rpm is None:
-        states, stopped, first = static_states(rotor, shaft, speeds, tick)
+        on_state = guess.add if not exact and len(speeds) >= 3 and usable_cores() >= 2 else None
+        states, stopped, first = static_states(rotor, shaft, speeds, tick, on_state)
         speeds = speeds[first: first + len(states)]
         total = 2 * len(speeds)
     else:  # the bearings' state at frozen_rpm, the shaft (gyroscopics) at every speed
         held = operating_state(rotor, frozen_rpm, shaft)
         states = [dataclasses.replace(held, speed_rad_s=float(s) * RPM) for s in speeds]
     n_track = n_modes
-    extra = max(4, n_modes // 2)  # spare modes so a mode leaving the window can be replaced
+    extra = max(4, n_modes // 2)  # spare modes so a mode leaving the window can be replaced (as in _Guess)
     freq = np.full((len(speeds), n_track), np.nan)
     zeta = np.full_like(freq, np.nan)
     logdec = np.full_like(freq, np.nan)
     whirl = np.full(freq.shape, "", dtype=object)
     prev_shapes = None
     prev_freq = None
-    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + extra, states, exact, n_check=n_modes)
+    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + extra, states, exact, n_check=n_modes,
+                                    guess=guess)
     for i, (s, m) in enumerate(zip(speeds, modal)):
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
         if prev_shapes is None:
@@ -121,12 +133,13 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
                           incomplete_reason=stopped)
 
 
-def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], None] | None = None):
+def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], None] | None = None,
+                  on_state: Callable[[OperatingState, float], None] | None = None):
     """(static states, "", 0) at every speed, each warm-started from its neighbour's; when one fails,
     the states before it and the reason ("stopped at ... rpm: ..."); the first speed's failure is
     raised (nothing to show), except at rest, which is left out with a warning (a fluid film carries
     no load at 0 rpm: ``--speeds 0:12000:50`` then starts at the first positive speed); the third item is
-    the index of the first speed solved."""
+    the index of the first speed solved.  ``on_state(state, rpm)`` is told of each state found."""
     states, st, first = [], None, 0
     for s in speeds:
         try:
@@ -145,6 +158,8 @@ def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], No
             log.warning("Campbell diagram %s", reason)
             return states, reason, first
         states.append(st)
+        if on_state is not None:
+            on_state(st, float(s))
         if tick is not None:
             tick()
     return states, "", first
@@ -163,14 +178,19 @@ def usable_cores() -> int:
 
 
 def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, states,
-                     exact: bool = False, n_check: int | None = None):
+                     exact: bool = False, n_check: int | None = None, guess: "_Guess | None" = None):
     """(description of the model used, iterator over the modal results at every speed).  The speeds
     are solved on all cores (LAPACK releases the GIL; each thread uses single-threaded BLAS) and
-    yielded in speed order for the sequential mode tracking."""
+    yielded in speed order for the sequential mode tracking; ``guess`` holds the modes prefetched
+    while the states were found, used when its basis passes the check."""
     from concurrent.futures import ThreadPoolExecutor
 
     expand, model = None, "full state space"
-    basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check)
+    basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check,
+                                             first=guess.basis if guess is not None else None)
+    prefetched = guess.results(basis) if guess is not None else None
+    if prefetched is not None:
+        return f"reduced: {basis.size} of {shaft.M.shape[0]} coordinates", iter(prefetched)
     if basis is None:
         matrices = [functools.partial(system_matrices, rotor, state=st) for st in states]
     else:
@@ -223,3 +243,42 @@ def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarr
             modes.append(k)
     order = np.argsort(out)
     return np.asarray(out, float)[order], np.asarray(modes, int)[order]
+
+
+class _Guess:
+    """The modes of each static state solved as it is found (:mod:`.prefetch`), on the basis the
+    reduced model tries first, built at the first state."""
+
+    def __init__(self, rotor: Rotor, n_modes: int):
+        self.rotor, self.n_modes = rotor, n_modes
+        self.shaft = None  # the assembled shaft, set before the first state
+        self.basis = None
+        self._prefetch: ModalPrefetch | None = None
+        self._started = False
+
+    def add(self, state, rpm: float) -> None:
+        if not self._started:
+            self._started = True
+            self.basis = first_basis(self.rotor, self.shaft, state, self.n_modes)
+            if self.basis is not None:
+                b, r = self.basis, self.rotor
+                self._prefetch = ModalPrefetch(
+                    lambda st, s: modal_from_matrices(b.system(st), r.dofs, r.node_z_m, self.n_modes, s, b.T))
+        if self._prefetch is not None:
+            self._prefetch.add(state, rpm)
+
+    def results(self, checked) -> list | None:
+        """The prefetched modes when ``checked`` (the basis that passed) is the guessed one, else None."""
+        if self._prefetch is None:
+            return None
+        if checked is None or checked is not self.basis:
+            self.cancel()
+            return None
+        out = self._prefetch.finish()
+        self._prefetch = None
+        return out
+
+    def cancel(self) -> None:
+        if self._prefetch is not None:
+            self._prefetch.cancel()
+            self._prefetch = None

@@ -124,18 +124,30 @@ def _m_orthonormal(V: np.ndarray, M: np.ndarray, rtol: float = 1e-10) -> np.ndar
     return V @ (U[:, keep] / np.sqrt(s[keep]))
 
 
+def first_basis(rotor: Rotor, shaft: ShaftMatrices, reference: OperatingState, n_modes: int) -> ReducedBasis | None:
+    """The basis :func:`checked_basis` tries first (the first cut-off, at ``reference``, the first
+    state), or None when it is already too large to be worth it; not yet checked."""
+    basis = reduced_basis(rotor, shaft, reference, n_modes, factor=FACTORS[0])
+    return None if basis.size > MAX_SHARE * shaft.M.shape[0] else basis
+
+
 def checked_basis(rotor: Rotor, shaft: ShaftMatrices, states: list[OperatingState], n_modes: int,
-                  n_check: int | None = None, extra_dofs: tuple[int, ...] = ()) -> ReducedBasis | None:
+                  n_check: int | None = None, extra_dofs: tuple[int, ...] = (),
+                  first: ReducedBasis | None = None) -> ReducedBasis | None:
     """The smallest basis of ``reduced_basis`` (cut-off from ``FACTORS``, built for ``n_modes``) whose
     first ``n_check`` roots match the full model's at the first and the last of ``states``; None when
     none does with fewer than ``MAX_SHARE`` of the full model's coordinates (then the reduction would
-    not pay)."""
+    not pay).  ``first``: the first cut-off's basis already built (:func:`first_basis`); it is
+    returned itself when it passes."""
     n_check = n_modes if n_check is None else n_check
     check = [states[0]] if len(states) == 1 else [states[0], states[-1]]
     full = [_roots(system_matrices(rotor, state=st), n_check) for st in check]
     size = shaft.M.shape[0]
     for factor in FACTORS:
-        basis = reduced_basis(rotor, shaft, states[0], n_modes, extra_dofs, factor=factor)
+        if first is not None and factor == FACTORS[0] and not extra_dofs:
+            basis = first
+        else:
+            basis = reduced_basis(rotor, shaft, states[0], n_modes, extra_dofs, factor=factor)
         if basis.size > MAX_SHARE * size:
             break
         errors = [_mismatch(exact, _roots(basis.system(st), n_check)) for exact, st in zip(full, check)]

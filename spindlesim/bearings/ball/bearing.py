@@ -151,6 +151,9 @@ class BallBearing(BearingBase):
         self.fully_floating = bool(self._floating.all())
         self._X = np.full((g.rows, g.balls, 2), np.nan)  # warm start of the ball centres
         self._shift_hint: float | None = None
+        # the last set equilibrium of an operating point (static_displacement, linearized): the start of
+        # the next one, a neighbouring load or speed (a Campbell diagram's), instead of the unloaded ring
+        self._q_last: np.ndarray | None = None
 
     # ---- variants -------------------------------------------------------------------------
     def with_preload(self, value: float) -> "BallBearing":
@@ -282,7 +285,9 @@ class BallBearing(BearingBase):
         K = np.zeros((5, 5))
         q = None
         for m in range(self.pitch_samples):
-            q, ev, _ = self._equilibrium(load, float(speed), m * pitch / self.pitch_samples, q)
+            phi = m * pitch / self.pitch_samples
+            q, ev, _ = self._warm_equilibrium(load, float(speed), phi) if q is None else \
+                self._equilibrium(load, float(speed), phi, q)
             K += ev.K
         return K / self.pitch_samples, np.zeros((5, 5))
 
@@ -292,7 +297,20 @@ class BallBearing(BearingBase):
         if static_load is not None:
             sl = np.asarray(static_load, float)
             load[: sl.size] = sl
-        return self._equilibrium(load, float(speed), 0.0)[0].copy()
+        return self._warm_equilibrium(load, float(speed), 0.0)[0].copy()
+
+    def _warm_equilibrium(self, load: np.ndarray, speed: float, phi: float):
+        """``_equilibrium`` started from the last operating point's (from the unloaded ring if that
+        fails): the same root to the set tolerance, in one or two Newton steps instead of four or five."""
+        start = self._q_last
+        try:
+            out = self._equilibrium(load, speed, phi, start)
+        except BallEquilibriumError:
+            if start is None:
+                raise
+            out = self._equilibrium(load, speed, phi)
+        self._q_last = out[0].copy()
+        return out
 
     # ---- equilibrium and results ---------------------------------------------------------------
     def _reference_stiffness(self) -> np.ndarray:

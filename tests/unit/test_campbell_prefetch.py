@@ -1,0 +1,68 @@
+"""Campbell modes solved while the static states are still being found (analysis/prefetch.py):
+the same numbers as the serial path, the serial path whenever the guessed basis fails its check,
+and no thread left behind by a failing diagram."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import spindlesim.analysis.campbell as campbell
+import spindlesim.analysis.reduced as reduced
+from spindlesim.deck import default_deck
+from spindlesim.model.build import build_rotor
+
+FIELDS = ("speed_rpm", "frequency_hz", "damping_ratio", "log_dec", "whirl", "critical_speeds_rpm")
+
+
+def _solve(deck, speeds, cores, monkeypatch):
+    monkeypatch.setattr(campbell, "usable_cores", lambda: cores)
+    return campbell.solve_campbell(build_rotor(default_deck(deck).deck), speeds, n_modes=6)
+
+
+def _same(a, b):
+    for f in FIELDS:
+        x, y = getattr(a, f), getattr(b, f)
+        assert np.array_equal(x, y), f
+    assert a.model == b.model
+
+
+@pytest.mark.parametrize("deck,speeds", [("milling_spindle", np.linspace(0, 24000, 12)),
+                                         ("spindle_linear", np.linspace(0, 12000, 9))])
+def test_prefetched_modes_equal_the_serial_ones(monkeypatch, deck, speeds):
+    calls = []
+    real = campbell.ModalPrefetch.finish
+    monkeypatch.setattr(campbell.ModalPrefetch, "finish", lambda self: calls.append(1) or real(self))
+    on = _solve(deck, speeds, 2, monkeypatch)
+    assert calls, "the prefetched modes were not used"
+    off = _solve(deck, speeds, 1, monkeypatch)
+    _same(on, off)
+
+
+def test_a_guess_that_fails_its_check_gives_the_serial_result(monkeypatch):
+    speeds = np.linspace(0, 12000, 9)
+    monkeypatch.setattr(reduced, "FREQ_RTOL", 1e-9)  # the first cut-off fails; a larger basis (or the full model)
+    used = []
+    real = campbell.ModalPrefetch.finish
+    monkeypatch.setattr(campbell.ModalPrefetch, "finish", lambda self: used.append(1) or real(self))
+    on = _solve("spindle_linear", speeds, 2, monkeypatch)
+    assert not used  # the prefetched modes were dropped
+    off = _solve("spindle_linear", speeds, 1, monkeypatch)
+    _same(on, off)
+    assert "reduced: 30 of" not in on.model  # not the guessed basis
+
+
+def test_no_prefetch_thread_outlives_a_failing_diagram(monkeypatch):
+    rotor = build_rotor(default_deck("spindle_linear").deck)
+    monkeypatch.setattr(campbell, "usable_cores", lambda: 2)
+    real = campbell.operating_state
+
+    def failing(rotor_, speed, shaft, **kw):
+        if speed > 5000:
+            raise KeyboardInterrupt  # Ctrl-C during the static states
+        return real(rotor_, speed, shaft, **kw)
+
+    monkeypatch.setattr(campbell, "operating_state", failing)
+    with pytest.raises(KeyboardInterrupt):
+        campbell.solve_campbell(rotor, np.linspace(0, 12000, 9), n_modes=6)
+    assert not [t for t in threading.enumerate() if t.name == "campbell-modal-prefetch"]
