@@ -14,6 +14,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import logging
+import time
 from typing import Callable
 
 import numpy as np
@@ -186,10 +187,12 @@ def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, stat
     from concurrent.futures import ThreadPoolExecutor
 
     expand, model = None, "full state space"
+    # the prefetched modes are finished first (the check below holds the interpreter: nothing would run
+    # beside it) and kept only when their basis passes the check
+    prefetched = guess.finish() if guess is not None else None
     basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check,
                                              first=guess.basis if guess is not None else None)
-    prefetched = guess.results(basis) if guess is not None else None
-    if prefetched is not None:
+    if prefetched is not None and basis is not None and basis is guess.basis:
         return f"reduced: {basis.size} of {shaft.M.shape[0]} coordinates", iter(prefetched)
     if basis is None:
         matrices = [functools.partial(system_matrices, rotor, state=st) for st in states]
@@ -247,32 +250,46 @@ def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarr
 
 class _Guess:
     """The modes of each static state solved as it is found (:mod:`.prefetch`), on the basis the
-    reduced model tries first, built at the first state."""
+    reduced model tries first, built at the first state.
+
+    Only when the states are costly: from the time between the first two states (a bearing solved at
+    every speed: ball sets about 5 ms, fluid films 15 ms), above ``MIN_STATE_S``; a rotor on linear
+    bearings (0.4 ms a state) has nothing to hide its modes behind, and two threads contending for
+    the interpreter would cost more than they save (its speeds then go to the cores in runs)."""
+
+    MIN_STATE_S = 2e-3
 
     def __init__(self, rotor: Rotor, n_modes: int):
         self.rotor, self.n_modes = rotor, n_modes
         self.shaft = None  # the assembled shaft, set before the first state
         self.basis = None
         self._prefetch: ModalPrefetch | None = None
-        self._started = False
+        self._first: list = []  # the first state, held until the second tells how long a state takes
+        self._decided = False
 
     def add(self, state, rpm: float) -> None:
-        if not self._started:
-            self._started = True
-            self.basis = first_basis(self.rotor, self.shaft, state, self.n_modes)
-            if self.basis is not None:
-                b, r = self.basis, self.rotor
-                self._prefetch = ModalPrefetch(
-                    lambda st, s: modal_from_matrices(b.system(st), r.dofs, r.node_z_m, self.n_modes, s, b.T))
+        if not self._decided:
+            if not self._first:
+                self._first = [(state, rpm), time.perf_counter()]
+                return
+            self._decided = True
+            (first, first_rpm), t0 = self._first
+            self._first = []
+            if time.perf_counter() - t0 < self.MIN_STATE_S:
+                return
+            self.basis = first_basis(self.rotor, self.shaft, first, self.n_modes)
+            if self.basis is None:
+                return
+            b, r = self.basis, self.rotor
+            self._prefetch = ModalPrefetch(
+                lambda st, s: modal_from_matrices(b.system(st), r.dofs, r.node_z_m, self.n_modes, s, b.T))
+            self._prefetch.add(first, first_rpm)
         if self._prefetch is not None:
             self._prefetch.add(state, rpm)
 
-    def results(self, checked) -> list | None:
-        """The prefetched modes when ``checked`` (the basis that passed) is the guessed one, else None."""
+    def finish(self) -> list | None:
+        """Every state's modes on the guessed basis (this thread helps with the last ones), or None."""
         if self._prefetch is None:
-            return None
-        if checked is None or checked is not self.basis:
-            self.cancel()
             return None
         out = self._prefetch.finish()
         self._prefetch = None
