@@ -31,21 +31,11 @@ from spindlesim.bearings.ball import kernel as kn
 from spindlesim.bearings.ball.section import build
 from spindlesim.bearings.ball.sweeps import speed_sweep
 from spindlesim.contact.hertz import point_contact_constant
+from timing import best  # benchmarks/timing.py (the script's folder is on sys.path)
 
 RPM = math.pi / 30.0
 TARGET_MS = 2.0
 LOAD = np.array([2000.0, -800.0, 1000.0, 15.0, -10.0])
-
-
-def _best(fn, repeat: int, number: int) -> tuple[float, float]:
-    wall = cpu = math.inf
-    for _ in range(repeat):
-        t, c = time.perf_counter(), time.process_time()
-        for _ in range(number):
-            fn()
-        wall = min(wall, (time.perf_counter() - t) / number)
-        cpu = min(cpu, (time.process_time() - c) / number)
-    return wall, cpu
 
 
 def section(**changes) -> BallSection:
@@ -67,22 +57,22 @@ def timings(repeat: int, number: int) -> None:
                 b._X[:] = np.nan
                 return b.state(LOAD, w)
 
-            wall, cpu = _best(cold, repeat, number)
+            wall, cpu = best(cold, repeat, number)
             flag = "ok" if cpu * 1e3 < TARGET_MS else "SLOW"
             print(f"{'state+tangent cold, ' + model + f', {rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}  {flag}")
-            wall, cpu = _best(lambda: b.state(LOAD, w), repeat, number)
+            wall, cpu = best(lambda: b.state(LOAD, w), repeat, number)
             print(f"{'state+tangent warm, ' + model + f', {rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
         q = b.equilibrium(LOAD, 15000 * RPM)
-        wall, cpu = _best(lambda: b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0), repeat, 5 * number)
+        wall, cpu = best(lambda: b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0), repeat, 5 * number)
         print(f"{'force_and_tangent warm, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
 
         def fat_cold():
             b._X[:] = np.nan
             return b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0)
 
-        wall, cpu = _best(fat_cold, repeat, 5 * number)
+        wall, cpu = best(fat_cold, repeat, 5 * number)
         print(f"{'force_and_tangent cold, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
-        wall, cpu = _best(lambda: b.linearized(15000 * RPM, LOAD), repeat, max(1, number // 5))
+        wall, cpu = best(lambda: b.linearized(15000 * RPM, LOAD), repeat, max(1, number // 5))
         print(f"{'linearized (4 cage positions), ' + model:44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
     b = build(section())
     t = time.perf_counter()

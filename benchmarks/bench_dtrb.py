@@ -13,27 +13,14 @@ from __future__ import annotations
 import argparse
 import logging
 import math
-import time
 
 import numpy as np
 
 from spindlesim.bearings.dtrb import DtrbBearing, dtrb_geometry
+from timing import best  # benchmarks/timing.py (the script's folder is on sys.path)
 
 D = np.array([3e-6, -2e-6, 1.5e-5, 4e-5, -6e-5])
 TARGET_MS = 1.0
-
-
-def _best(fn, repeat: int, number: int) -> tuple[float, float]:
-    """(best wall time, best process CPU time) per call; on a loaded machine the CPU time is
-    the fairer figure (the wall time includes waiting for a core)."""
-    wall = cpu = math.inf
-    for _ in range(repeat):
-        t, c = time.perf_counter(), time.process_time()
-        for _ in range(number):
-            fn()
-        wall = min(wall, (time.perf_counter() - t) / number)
-        cpu = min(cpu, (time.process_time() - c) / number)
-    return wall, cpu
 
 
 def main() -> None:
@@ -44,7 +31,7 @@ def main() -> None:
     logging.basicConfig(level=logging.ERROR)
     speed = 3000 * math.pi / 30
     ref = np.random.default_rng(0).random((40, 61)) * 1e-6
-    power_us = 1e6 * _best(lambda: np.power(ref, 1.0 / 9.0), args.repeat, 10 * args.number)[1]
+    power_us = 1e6 * best(lambda: np.power(ref, 1.0 / 9.0), args.repeat, 10 * args.number)[1]
     print(f"machine reference: np.power on 40 x 61 contacts = {power_us:.1f} us CPU "
           f"(about 30 us on an idle core of this machine; scale the times below by it)")
     print(f"{'rollers':>8} {'slices':>6} {'iters cold':>10} {'cold ms':>8} {'cold cpu':>8} {'warm ms':>8} "
@@ -55,11 +42,11 @@ def main() -> None:
                           crown_radius_m=2.68, n_slices=S)
         b = DtrbBearing(g, 30e-6)
         iters = b.state(D, speed).iterations
-        cold = _best(lambda: b.reaction_and_stiffness(D, speed), args.repeat, args.number)
+        cold = best(lambda: b.reaction_and_stiffness(D, speed), args.repeat, args.number)
         _, _, u = b.reaction_and_stiffness(D, speed)
         D2 = D + np.array([1e-7, 0, 0, 0, 0])
-        warm = _best(lambda: b.reaction_and_stiffness(D2, speed, roller_guess=u), args.repeat, args.number)
-        eq, _ = _best(lambda: b.equilibrium([5000.0, 0.0, 5000.0, 0.0, 0.0], speed), 3, 5)
+        warm = best(lambda: b.reaction_and_stiffness(D2, speed, roller_guess=u), args.repeat, args.number)
+        eq, _ = best(lambda: b.equilibrium([5000.0, 0.0, 5000.0, 0.0, 0.0], speed), 3, 5)
         flag = ""
         if (Z, S) == (20, 30):
             flag = "cold " + ("PASS" if cold[1] * 1e3 < TARGET_MS else f"over {TARGET_MS} ms")

@@ -66,16 +66,16 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     speed, or with ``frozen_rpm`` held at their coefficients of that speed (gyroscopics still vary).
     The modes come from the reduced model (``reduced``), or with ``exact`` from the full state-space
     QR solution at every speed."""
-    guess = _Guess(rotor, n_modes + max(4, n_modes // 2))
+    shaft = assemble_shaft(rotor)
+    guess = _Guess(rotor, shaft, n_modes + max(4, n_modes // 2))
     try:
-        return _campbell(rotor, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess)
+        return _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess)
     finally:
         guess.cancel()  # a failure or Ctrl-C before the prefetched modes were used: stop their thread
 
 
-def _campbell(rotor, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess) -> CampbellResult:
+def _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess) -> CampbellResult:
     speeds = np.asarray(speeds_rpm, float)
-    shaft = assemble_shaft(rotor)
     total = 2 * len(speeds) if frozen_rpm is None else len(speeds)
     done = [0]
 
@@ -85,7 +85,6 @@ def _campbell(rotor, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess) ->
             progress(done[0], total)
 
     states, stopped = None, ""
-    guess.shaft = shaft
     if frozen_rpm is None:
         on_state = guess.add if not exact and len(speeds) >= 3 and usable_cores() >= 2 else None
         states, stopped, first = static_states(rotor, shaft, speeds, tick, on_state)
@@ -259,9 +258,8 @@ class _Guess:
 
     MIN_STATE_S = 2e-3
 
-    def __init__(self, rotor: Rotor, n_modes: int):
-        self.rotor, self.n_modes = rotor, n_modes
-        self.shaft = None  # the assembled shaft, set before the first state
+    def __init__(self, rotor: Rotor, shaft, n_modes: int):
+        self.rotor, self.shaft, self.n_modes = rotor, shaft, n_modes
         self.basis = None
         self._prefetch: ModalPrefetch | None = None
         self._first: list = []  # the first state, held until the second tells how long a state takes
