@@ -45,6 +45,14 @@ class LazyGroup(click.Group):
         module = importlib.import_module(f"spindlesim.commands.{COMMANDS[name][0]}")
         return module.command
 
+    def invoke(self, ctx):
+        """Run the subcommand; a Ctrl-C anywhere in it (its imports and deck loading included, before the
+        command's own handler is in place) is exit code 130 with one line, never click's "Aborted!"."""
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            _interrupted()
+
     def format_commands(self, ctx, formatter):
         rows = [(name, help_) for name, (_, help_) in COMMANDS.items()]
         with formatter.section("Commands"):
@@ -73,6 +81,14 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
         os.environ.setdefault(var, "1")
 
 
+EXIT_INTERRUPTED = 130  # spindlesim.runs.status.EXIT_INTERRUPTED, not imported here: that loads the deck layer
+
+
+def _interrupted() -> None:
+    click.echo(f"spindlesim: interrupted (exit code {EXIT_INTERRUPTED})", err=True)
+    raise SystemExit(EXIT_INTERRUPTED)
+
+
 def console() -> None:
     """The ``spindlesim`` program: :func:`main` with figures drawn in a figure process
     (spindlesim/output/drawing.py) and no final garbage collection.
@@ -83,10 +99,12 @@ def console() -> None:
     has been waited for)."""
     import gc
 
-    from .output import drawing
-
-    drawing.allow()
     try:
+        from .output import drawing
+
+        drawing.allow()
         main(prog_name="spindlesim")
+    except KeyboardInterrupt:  # before the group runs (imports at start-up)
+        _interrupted()
     finally:
         gc.freeze()

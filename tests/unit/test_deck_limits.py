@@ -7,6 +7,7 @@ or mapping needs a maximum length.  A new key without limits fails here, not in 
 
 from __future__ import annotations
 
+import re
 import typing
 from types import UnionType
 
@@ -109,7 +110,8 @@ def _bomb(levels: int) -> str:
 
 
 @pytest.mark.parametrize("text,expect", [
-    ("a: " + "[" * 5000 + "]" * 5000, "deck.yaml:1:35: a[0]"),  # RecursionError before
+    # RecursionError before; the project's limit or PyYAML's own (6.0.4 and later stop at 1000 levels)
+    ("a: " + "[" * 5000 + "]" * 5000, re.compile(r"^deck\.yaml:1:\d+: .*nest")),
     ("title: !!int abc\n", "deck.yaml:1:8: title: cannot read 'abc' as an integer (!!int)"),
     ("title: !!python/object/apply:os.getcwd []\n", "deck.yaml:1:8: title: YAML tag !!python/object/apply:os.getcwd is not supported"),
     (_bomb(9), "the deck holds more than 250000 values (aliases expanded)"),
@@ -134,8 +136,9 @@ def test_hostile_decks_end_in_located_issues(text, expect):
 
     t0 = time.perf_counter()
     msgs = issues(text)
-    assert time.perf_counter() - t0 < 5.0
-    assert any(expect in m for m in msgs), msgs
+    assert time.perf_counter() - t0 < 60.0  # bounded work (exponential blow-ups take hours), not a timing
+    found = (lambda m: expect.search(m)) if isinstance(expect, re.Pattern) else (lambda m: expect in m)
+    assert any(found(m) for m in msgs), msgs
     assert all(m.startswith("deck.yaml:") and m.split(":")[1].isdigit() for m in msgs), msgs
 
 
