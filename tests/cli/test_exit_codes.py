@@ -14,6 +14,7 @@ import h5py
 from click.testing import CliRunner
 
 from spindlesim.cli import main
+from tests.processes import as_in_a_terminal
 
 SPINDLESIM = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
 RIG_DECK = (resources.files("spindlesim.decks") / "transient.yaml").read_text()
@@ -59,7 +60,8 @@ def _blowing_up_deck(tmp_path) -> Path:
 def test_sigint_on_a_transient_exits_130_and_marks_the_files_incomplete(tmp_path):
     out = tmp_path / "out"
     proc = subprocess.Popen([str(SPINDLESIM), "transient", "--model", "flexible_race", "--duration", "3", "-o",
-                             str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=_env())
+                             str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=_env(),
+                            preexec_fn=as_in_a_terminal)
     err, out_lines = _Lines(proc.stderr), _Lines(proc.stdout)
     try:
         assert err.wait_for("transient: 100/1000", 120), err.text()  # integrating: 10 % done

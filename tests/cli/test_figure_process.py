@@ -15,6 +15,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.processes import as_in_a_terminal
+
 SPINDLESIM = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
 LINEAR_DECK = (resources.files("spindlesim.decks") / "spindle_linear.yaml").read_text()
 LINUX = sys.platform.startswith("linux")
@@ -81,7 +83,8 @@ def test_the_everyday_plotting_modules_do_not_import_matplotlib():
 
 def _start(tmp_path, args):
     return subprocess.Popen([str(SPINDLESIM), *map(str, args)], env=_env(), stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, start_new_session=True)
+                            stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=as_in_a_terminal)
 
 
 def _figure_process_of(proc, timeout=20.0) -> int:
