@@ -21,6 +21,10 @@ class StaticResult:
     static_stiffness_N_m: float  # 1 / compliance at (stiffness_node, stiffness_dof)
     speed_rpm: float
     state: object = None  # the OperatingState (q with every DOF, bearing loads on all their DOFs)
+    axial_displacement_m: np.ndarray | None = None  # [node] z, where the model has the axial DOF
+    applied_axial_force_N: float = 0.0  # sum of the applied axial loads (z)
+    tool_tip_node: int | None = None  # 0-based, when the deck has a tool
+    tool_tip_stiffness_N_m: dict | None = None  # {"x", "y"[, "z"]}: 1 / direct compliance at the tip
 
 
 @dataclass(frozen=True)

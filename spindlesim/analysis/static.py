@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..model.rotor import Rotor
-from .operating import EquilibriumError, _solve, operating_state, system_matrices
+from .operating import EquilibriumError, SingularRotorError, _solve, operating_state, system_matrices
 from .results import StaticResult
 
 
@@ -21,7 +21,9 @@ def _component(rotor: Rotor, q: np.ndarray, dof: str) -> np.ndarray:
 
 def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x",
                  speed_rpm: float | None = None) -> StaticResult:
-    """Static equilibrium at ``speed_rpm`` (default: the rotor's); bearing reactions on the shaft."""
+    """Static equilibrium at ``speed_rpm`` (default: the rotor's); bearing reactions on the shaft; the
+    static stiffness at (``stiffness_node``, ``stiffness_dof``) and, with a tool, at the tool tip (x, y
+    and, where the model has it, axial z)."""
     st = operating_state(rotor, speed_rpm)
     q = st.q
     disp = np.stack([_component(rotor, q, "x"), _component(rotor, q, "y")], axis=1)
@@ -29,12 +31,15 @@ def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x"
     forces = np.array([-w[:2] for w in st.loads]).reshape(-1, 2)
     applied = np.array([st.Q[rotor.dofs.component("x")].sum(), st.Q[rotor.dofs.component("y")].sum()])
     K = system_matrices(rotor, state=st).K
-    e = np.zeros(rotor.dofs.size)
-    k = rotor.dofs.index(stiffness_node, stiffness_dof)
-    e[k] = 1.0
-    compliance = _solve(K, e, "the linearised rotor")[k]
-    if not np.isfinite(compliance) or compliance <= 0:
+    compliance = _compliance(rotor, K, stiffness_node, stiffness_dof, held=True)
+    if compliance is None:
         raise EquilibriumError(f"no positive static compliance at node {stiffness_node + 1} {stiffness_dof}")
+    tip = rotor.tool_tip
+    tip_k = None
+    if tip is not None:
+        tip_c = {d: _compliance(rotor, K, tip, d) for d in ("x", "y", "z") if rotor.dofs.has(d)}
+        tip_k = {d: 1.0 / c for d, c in tip_c.items() if c is not None}  # z left out when axially free
+    axial = st.Q[rotor.dofs.component("z")].sum() if rotor.dofs.has("z") else 0.0
     return StaticResult(
         node_z_m=rotor.node_z_m, displacement_m=disp, slope_rad=slope,
         bearing_names=tuple(b.name for b in rotor.bearings),
@@ -42,4 +47,22 @@ def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x"
         bearing_force_N=forces, applied_force_N=applied, stiffness_node=stiffness_node,
         stiffness_dof=stiffness_dof, static_stiffness_N_m=float(1.0 / compliance),
         speed_rpm=st.speed_rad_s * 30 / np.pi, state=st,
+        axial_displacement_m=_component(rotor, q, "z") if rotor.dofs.has("z") else None,
+        applied_axial_force_N=float(axial), tool_tip_node=tip, tool_tip_stiffness_N_m=tip_k,
     )
+
+
+def _compliance(rotor: Rotor, K: np.ndarray, node: int, dof: str, held: bool = False) -> float | None:
+    """Direct static compliance at (node, dof) of the linearised rotor; None where it is not positive
+    and finite.  A direction the bearings do not hold raises SingularRotorError when ``held`` (the
+    compliance asked for), else gives None."""
+    k = rotor.dofs.index(node, dof)
+    e = np.zeros(rotor.dofs.size)
+    e[k] = 1.0
+    try:
+        c = float(_solve(K, e, "the linearised rotor")[k])
+    except SingularRotorError:
+        if held:
+            raise
+        return None
+    return c if np.isfinite(c) and c > 0 else None

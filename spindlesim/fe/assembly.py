@@ -54,6 +54,18 @@ class ShaftMatrices:
         return C
 
 
+def oriented_nodes(rotor: Rotor) -> tuple[np.ndarray, np.ndarray]:
+    """Each element's (first, second) node with the first at the smaller z.
+
+    The element matrices are written for an element pointing along +z from its first node (the
+    slopes' signs depend on it); a chain built outwards towards -z (a tool and holder in front of
+    a nose at node 1) is therefore taken from its far end."""
+    el = rotor.elements
+    a, b = np.asarray(el.node_a, dtype=int), np.asarray(el.node_b, dtype=int)
+    flip = rotor.node_z_m[b] < rotor.node_z_m[a]
+    return np.where(flip, b, a), np.where(flip, a, b)
+
+
 def _scatter(dofs: DofMap, node_a: np.ndarray, node_b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Global (row, col) index arrays for every element's 8x8 lateral block."""
     idx = np.array([[dofs.index(int(nd), d) for nd in (a, b) for d in DOFS_4] for a, b in zip(node_a, node_b)],
@@ -73,7 +85,8 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
             el.length_m, el.area_m2, el.second_moment_m4, el.density_kg_m3,
             el.youngs_modulus_Pa, el.shear_modulus_Pa, el.shear_coefficient, el.axial_force_N,
         )
-        rows, cols = _scatter(dofs, el.node_a, el.node_b)
+        node_a, node_b = oriented_nodes(rotor)
+        rows, cols = _scatter(dofs, node_a, node_b)
         for out, e in ((M, em.mass), (G, em.gyroscopic), (KB, em.stiffness_bending), (KA, em.stiffness_axial),
                        (KC, em.circulatory)):
             np.add.at(out, (np.broadcast_to(rows, e.shape), np.broadcast_to(cols, e.shape)), e)
@@ -82,7 +95,7 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
         ea_l = el.youngs_modulus_Pa * el.area_m2 / el.length_m
         m6 = el.density_kg_m3 * el.area_m2 * el.length_m / 6
         for e in range(el.count):
-            ij = np.ix_(*(2 * [[dofs.index(int(el.node_a[e]), "z"), dofs.index(int(el.node_b[e]), "z")]]))
+            ij = np.ix_(*(2 * [[dofs.index(int(el.node_a[e]), "z"), dofs.index(int(el.node_b[e]), "z")]]))  # symmetric
             KB[ij] += ea_l[e] * np.array([[1.0, -1.0], [-1.0, 1.0]])
             M[ij] += m6[e] * np.array([[2.0, 1.0], [1.0, 2.0]])
     for disk in rotor.disks:

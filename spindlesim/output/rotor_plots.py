@@ -14,21 +14,33 @@ from .figures import fixed_layout, new_figure
 
 
 def static_figure(r: StaticResult):
+    """Deflection and slope along the rotor, nodes in axial order (a tool ahead of the nose reads left to
+    right), bearings and the tool tip marked."""
     fig = new_figure(8, 6)
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
+    order = np.argsort(r.node_z_m, kind="stable")
     z = r.node_z_m * 1e3
-    ax1.plot(z, r.displacement_m[:, 0] * 1e6, "o-", label="x (horizontal)")
-    ax1.plot(z, r.displacement_m[:, 1] * 1e6, "s-", label="y (vertical)")
-    for name, node in zip(r.bearing_names, r.bearing_nodes):
-        ax1.axvline(z[node], color="0.6", ls="--")
-        ax1.annotate(name, (z[node], 0), textcoords="offset points", xytext=(3, 5), fontsize=8)
+    zs = z[order]
+    ax1.plot(zs, r.displacement_m[order, 0] * 1e6, "o-", ms=4, label="x (horizontal)")
+    ax1.plot(zs, r.displacement_m[order, 1] * 1e6, "s-", ms=4, label="y (vertical)")
+    for k, (name, node) in enumerate(zip(r.bearing_names, r.bearing_nodes)):
+        ax1.axvline(z[node], color="0.6", ls="--", lw=0.8)
+        same = sum(1 for n in r.bearing_nodes[:k] if z[n] == z[node])  # bearings at one node: stacked labels
+        ax1.annotate(name, (z[node], 0), xycoords=("data", "axes fraction"), textcoords="offset points",
+                     xytext=(3, 4 + 10 * same), fontsize=7, color="0.35")
+    if r.tool_tip_node is not None:
+        t = r.tool_tip_node
+        ax1.annotate("tool tip", (z[t], r.displacement_m[t, 0] * 1e6), textcoords="offset points", xytext=(6, -4),
+                     fontsize=8)
     ax1.set_ylabel("deflection [um]")
-    ax1.set_title(f"Static deflection; stiffness at node {r.stiffness_node + 1} {r.stiffness_dof}: "
-                  f"{r.static_stiffness_N_m / 1e6:.3g} N/um")
+    F = r.applied_force_N
+    ax1.set_title(f"Static deflection under Fx {F[0]:.4g} N, Fy {F[1]:.4g} N (applied, gravity included); "
+                  f"stiffness at node {r.stiffness_node + 1} {r.stiffness_dof}: "
+                  f"{r.static_stiffness_N_m / 1e6:.3g} N/um", fontsize=9)
     ax1.legend()
     ax1.grid(True, alpha=0.3)
-    ax2.plot(z, r.slope_rad[:, 0] * 1e6, "o-", label="theta_x")
-    ax2.plot(z, r.slope_rad[:, 1] * 1e6, "s-", label="theta_y")
+    ax2.plot(zs, r.slope_rad[order, 0] * 1e6, "o-", ms=4, label="theta_x")
+    ax2.plot(zs, r.slope_rad[order, 1] * 1e6, "s-", ms=4, label="theta_y")
     ax2.set_xlabel("axial position z [mm]")
     ax2.set_ylabel("slope [urad]")
     ax2.legend()

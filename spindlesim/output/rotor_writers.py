@@ -21,7 +21,7 @@ NOT_TRACKED = "NaN where the mode is not tracked at that speed"
 
 def write_static(path: Path, run: RunInfo, r: StaticResult) -> Path:
     g = "/static"
-    return write_h5(path, run, {
+    data = {
         f"{g}/node_z_m": (r.node_z_m, "m", ("node",)),
         f"{g}/displacement_m": (r.displacement_m, "m", ("node", "dof")),
         f"{g}/slope_rad": (r.slope_rad, "rad", ("node", "rotation")),
@@ -33,9 +33,19 @@ def write_static(path: Path, run: RunInfo, r: StaticResult) -> Path:
         f"{g}/static_stiffness_N_m": Data(r.static_stiffness_N_m, "N/m", (),
                                           "1 / compliance at (stiffness_node, stiffness_dof)"),
         **labels(g, "dof", XY), **labels(g, "rotation", ("theta_x", "theta_y")), **labels(g, "load", FXY),
-    }, {g: {"speed_rpm": r.speed_rpm, "stiffness_node": r.stiffness_node + 1,
-            "stiffness_dof": r.stiffness_dof,
-            "bearing_force_convention": "force exerted by the bearing on the shaft"}})
+    }
+    attrs = {"speed_rpm": r.speed_rpm, "stiffness_node": r.stiffness_node + 1, "stiffness_dof": r.stiffness_dof,
+             "bearing_force_convention": "force exerted by the bearing on the shaft"}
+    if r.axial_displacement_m is not None:
+        data[f"{g}/axial_displacement_m"] = (r.axial_displacement_m, "m", ("node",))
+        data[f"{g}/applied_axial_force_N"] = Data(r.applied_axial_force_N, "N", (), "sum of the applied axial (z) loads")
+    if r.tool_tip_node is not None:
+        tip = r.tool_tip_stiffness_N_m or {}
+        data[f"{g}/tool_tip_stiffness_N_m"] = Data(np.array([tip[d] for d in tip]), "N/m", ("tip_dof",),
+                                                   "1 / direct static compliance at the tool tip")
+        data.update(labels(g, "tip_dof", tuple(tip)))
+        attrs["tool_tip_node"] = r.tool_tip_node + 1
+    return write_h5(path, run, data, {g: attrs})
 
 
 def write_modal(path: Path, run: RunInfo, r: ModalResult) -> Path:

@@ -58,6 +58,12 @@ def _static(f):
     g = f["static"]
     a = g.attrs
     lines, data = [], {"speed_rpm": _f(a["speed_rpm"])}
+    F = g["applied_force_N"][:]
+    load = f"Fx {F[0]:.4g} N, Fy {F[1]:.4g} N"
+    if "applied_axial_force_N" in g:
+        load += f", Fz {_f(g['applied_axial_force_N'][()]):.4g} N"
+    lines.append(f"at {data['speed_rpm']:g} rpm under the applied loads (gravity included): {load}")
+    data["applied_force_N"] = F.tolist()
     if "static_stiffness_N_m" in g:
         k = _f(g["static_stiffness_N_m"][()])
         node, dof = int(a["stiffness_node"]), str(a["stiffness_dof"])
@@ -66,6 +72,14 @@ def _static(f):
         lines.append(f"static stiffness at node {node} {dof}: {k / 1e6:.4g} N/um; deflection there "
                      f"x {disp[0] * 1e6:.4g} um, y {disp[1] * 1e6:.4g} um")
         data.update(stiffness_N_m=k, stiffness_node=node, deflection_m=disp.tolist())
+    if "tool_tip_stiffness_N_m" in g:
+        tip = int(a["tool_tip_node"])
+        ks = dict(zip(g["tip_dof"][:].astype(str), g["tool_tip_stiffness_N_m"][:]))
+        disp = g["displacement_m"][tip - 1]
+        words = [f"{'axial' if d == 'z' else 'radial'} {d} {v / 1e6:.4g}" for d, v in ks.items()]
+        lines.append(f"tool tip (node {tip}) static stiffness: {', '.join(words)} N/um; deflection there "
+                     f"x {disp[0] * 1e6:.4g} um, y {disp[1] * 1e6:.4g} um")
+        data.update(tool_tip_node=tip, tool_tip_stiffness_N_m={d: float(v) for d, v in ks.items()})
     names = [str(n) for n in g["bearing_name"][:].astype(str)]
     forces = g["bearing_force_N"][:]
     data["bearing_force_N"] = {n: fb.tolist() for n, fb in zip(names, forces)}

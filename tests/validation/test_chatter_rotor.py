@@ -54,9 +54,10 @@ def test_tool_point_model_equals_direct_dynamic_stiffness(mill_rotor):
     H = model.receptance(2 * np.pi * f)
     ref = _direct_tool_point(mill_rotor, 18000.0, f)
     np.testing.assert_allclose(H, ref, rtol=0, atol=1e-8 * np.abs(ref).max())
-    # the tool tip is the most compliant point: the dominant mode is the tool on its joints, 2.0-2.4 kHz
+    # the tool tip is the most compliant point: the dominant mode is the tool on its joints, 2.2-2.6 kHz
+    # (2.43 kHz; 2.20 kHz while the tool and holder were assembled pointing the wrong way, issue 21)
     top = max(model.significant_modes(rel=0.5), key=lambda m: m.peak_compliance_m_N)
-    assert 2000.0 < top.frequency_hz < 2400.0
+    assert 2200.0 < top.frequency_hz < 2600.0
 
 
 def test_lobes_from_model_equal_lobes_from_directly_solved_frf(mill_rotor):
