@@ -20,11 +20,18 @@ from .linear import section as linear
 from .roller import section as roller
 
 
+def _unplaced(entry: Any, node_z_m: float, shaft_z_m: tuple[float, float]) -> Any:
+    return entry
+
+
 @dataclass(frozen=True)
 class BearingType:
     entry: type[BaseModel]  # deck model of one entry; its ``type`` literal is the tag
     build: Callable[[Any], Any]  # deck entry -> bearing (SI)
     summary: str
+    #: (entry, z of its node [m], (z_min, z_max) of the shaft [m]) -> entry with the keys that depend on
+    #: where the bearing sits resolved (a spring-preloaded ball set's outboard side)
+    placed: Callable[[Any, float, tuple[float, float]], Any] = _unplaced
 
 
 BEARING_TYPES: dict[str, BearingType] = {
@@ -36,7 +43,8 @@ BEARING_TYPES: dict[str, BearingType] = {
     "roller": BearingType(roller.RollerEntry, roller.build,
                           "cylindrical roller bearing, rigid or flexible outer race (Jung et al. 2007)"),
     "ball": BearingType(ball.BallBearingEntry, ball.build,
-                        "angular-contact / deep-groove ball bearing or set, quasi-static with speed effects (Jones 1960)"),
+                        "angular-contact / deep-groove ball bearing or set, quasi-static with speed effects (Jones 1960)",
+                        ball.placed),
     "dtrb": BearingType(dtrb.DtrbBearingEntry, dtrb.build,
                         "double-row tapered roller bearing, quasi-static (Kim et al. 2023)"),
 }

@@ -68,15 +68,21 @@ def _joint(j: Any, a: int, b: int) -> Joint:
     return Joint(int(a), int(b), j.translational_N_m, j.rotational_Nm_rad, j.translational_Ns_m, j.rotational_Nms_rad)
 
 
-def build_bearings(deck: Any) -> tuple:
-    """Every ``bearings:`` entry through its family's builder (the type table)."""
-    return tuple(BEARING_TYPES[b.type].build(b) for b in deck.bearings)
+def build_bearings(deck: Any, node_z_m: np.ndarray | None = None) -> tuple:
+    """Every ``bearings:`` entry through its family's builder (the type table), placed on the shaft
+    whose node positions are ``node_z_m`` (keys that depend on where a bearing sits)."""
+    out = []
+    for b in deck.bearings:
+        kind = BEARING_TYPES[b.type]
+        if node_z_m is not None and len(node_z_m) > 1:
+            b = kind.placed(b, float(node_z_m[b.node - 1]), (float(node_z_m.min()), float(node_z_m.max())))
+        out.append(kind.build(b))
+    return tuple(out)
 
 
 def build_rotor(deck: Any, speed_rpm: float | None = None) -> Rotor:
     """Rotor in SI from a validated deck (``LoadedDeck.deck``): a Timoshenko shaft (``shaft:``) or a
     rigid journal (``journal:``, one node with translations only)."""
-    bearings = build_bearings(deck)
     loads = tuple(NodalLoad(p.node - 1, (p.fx_N, p.fy_N, p.mx_Nm, p.my_Nm), p.fz_N) for p in deck.loads)
     op = deck.operating
     speed = op.speed_rpm if speed_rpm is None else speed_rpm
@@ -84,10 +90,11 @@ def build_rotor(deck: Any, speed_rpm: float | None = None) -> Rotor:
     if deck.shaft is None:
         j = deck.journal
         return Rotor(node_z_m=np.zeros(1), elements=ShaftElements.empty(), disks=(Disk(0, j.mass_kg, 0.0, 0.0, "journal"),),
-                     bearings=bearings, loads=loads, speed_rpm=speed, gravity_m_s2=gravity,
+                     bearings=build_bearings(deck), loads=loads, speed_rpm=speed, gravity_m_s2=gravity,
                      dofs=DofMap(1, DOFS_JOURNAL), ground_damping_Ns_m=j.damping_Ns_mm * 1e3)
     el = shaft_elements(deck.shaft)
     z = deck.shaft.start_z_mm * 1e-3 + np.concatenate([[0.0], np.cumsum(el.length_m)])
+    bearings = build_bearings(deck, z)  # placed on the shaft (without the tool)
     joints: tuple[Joint, ...] = ()
     tip = None
     if deck.tool is not None:

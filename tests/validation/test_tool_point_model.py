@@ -34,9 +34,9 @@ from spindlesim.analysis.modal import solve_modal
 from spindlesim.analysis.static import solve_static
 from spindlesim.deck import parse_deck
 from spindlesim.model.build import build_rotor
+from tests.mirror import mirror_deck
 
 MILLING = Path(__file__).parents[2] / "decks" / "milling_spindle.yaml"
-N_SHAFT_NODES = 19
 
 
 def _cowper(nu: float, do: float, di: float) -> float:
@@ -92,17 +92,6 @@ def _deck_dict() -> dict:
     return d
 
 
-def _mirror(d: dict) -> dict:
-    m = copy.deepcopy(d)
-    n = N_SHAFT_NODES
-    m["shaft"]["elements"] = list(reversed(d["shaft"]["elements"]))
-    m["tool"]["holder_node"] = n
-    for item in m.get("disks", []) + m["bearings"] + m.get("loads", []):
-        if item["node"] <= n:
-            item["node"] = n + 1 - item["node"]
-    return m
-
-
 def _rotor(d: dict, tip_load_N: float = 0.0, speed_rpm: float | None = None):
     d = copy.deepcopy(d)
     d["loads"] = [] if tip_load_N == 0 else [{"node": 26, "fx_N": tip_load_N}]
@@ -116,7 +105,7 @@ def test_tool_tip_deflection_beyond_the_nose_tangent_is_the_cantilever_closed_fo
     d = _deck_dict()
     d["operating"]["gravity"] = False
     if mirrored:
-        d = _mirror(d)
+        d = mirror_deck(d)
     P = 200.0
     rotor = _rotor(d, P, speed_rpm=0.0)
     r = solve_static(rotor)
@@ -135,7 +124,7 @@ def test_tool_tip_deflection_beyond_the_nose_tangent_is_the_cantilever_closed_fo
 
 def test_mirror_image_of_the_milling_spindle_gives_the_same_tool_tip_and_frequencies():
     d = _deck_dict()
-    m = _mirror(d)
+    m = mirror_deck(d)
     tips = []
     for deck in (d, m):
         rotor = _rotor(deck, 200.0, speed_rpm=0.0)

@@ -23,11 +23,12 @@ Preload (one choice for the whole set):
   faces that the clamping closes).  Each row's inner ring then sits axial_m / 2 past first
   contact in its own thrust direction; the node's z absorbs any unequal split (3-row sets), so
   q = 0 is the centre of a symmetric set.  Needs opposed rows (DB or DF).
-- ``spring`` (constant pressure): the outer rings of the floating rows (those with the thrust
-  direction of the last row; every row of a single bearing or tandem set) slide axially in the
+- ``spring`` (constant pressure): the outer rings of the floating rows slide axially in the
   housing and are pushed by a constant force ``axial_N``; their axial shift is solved for at
   every q and condensed out of the tangent (the floating rows add no axial stiffness).  The
-  housing still holds them radially and in tilt.
+  housing still holds them radially and in tilt.  The floating rows are those with the thrust
+  direction of the end row on the ``floating_side`` of the set (+1: the row at the largest z,
+  -1: at the smallest); every row of a single bearing or tandem set.
 - ``none``: rings at first contact (q = 0), clearance as given.
 
 Ball positions: psi_j = phi + 2 pi j / Z in every row (rows aligned), phi = cage angle =
@@ -63,11 +64,13 @@ class BallEquilibriumError(ArithmeticError):
 
 @dataclass(frozen=True)
 class Preload:
-    """Preload of the set in SI: kind none | position (axial_m) | spring (axial_N)."""
+    """Preload of the set in SI: kind none | position (axial_m) | spring (axial_N, with the floating
+    rows on the ``floating_side`` (+1 / -1 along z) of the set)."""
 
     kind: str = "none"
     axial_m: float = 0.0
     axial_N: float = 0.0
+    floating_side: int = 1
 
     def label(self) -> str:
         if self.kind == "position":
@@ -115,6 +118,8 @@ class BallBearing(BearingBase):
             raise ValueError("a position preload needs opposed rows (arrangement DB or DF)")
         if preload.kind == "spring" and not preload.axial_N > 0.0:
             raise ValueError("a spring preload needs a positive axial force")
+        if preload.floating_side not in (1, -1):
+            raise ValueError("floating_side must be +1 or -1")
         if pitch_samples < 1:
             raise ValueError("pitch_samples must be >= 1")
         self.geometry = geometry
@@ -146,8 +151,9 @@ class BallBearing(BearingBase):
         self._row_sign = np.ascontiguousarray(s, dtype=np.int64)
         self._row_zc = g.row_z_m + s * g.inner_centre_offset_m
         self._row_offset = np.full(g.rows, 0.5 * preload.axial_m if preload.kind == "position" else 0.0)
-        self._s_float = int(s[-1])
-        self._floating = (s == s[-1]) if preload.kind == "spring" else np.zeros(g.rows, bool)
+        end = int(np.argmax(g.row_z_m) if preload.floating_side > 0 else np.argmin(g.row_z_m))
+        self._s_float = int(s[end])
+        self._floating = (s == s[end]) if preload.kind == "spring" else np.zeros(g.rows, bool)
         self.fully_floating = bool(self._floating.all())
         self._X = np.full((g.rows, g.balls, 2), np.nan)  # warm start of the ball centres
         self._shift_hint: float | None = None

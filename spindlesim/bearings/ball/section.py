@@ -21,15 +21,19 @@ Rotor deck entry (``bearings:`` list), 5 DOF at its node::
       rows: 2                          # 1 for single, 2-4 for sets
       row_spacing_mm: 20.0             # axial distance between adjacent ball rows
       axial_direction: "+z"            # thrust the tandem rows carry (single, DT, 3-row sets)
-      preload: {kind: position, axial_um: 21.0}   # or {kind: spring, axial_N: 250.0}
+      preload: {kind: position, axial_um: 21.0}   # or {kind: spring, axial_N: 250.0, floating: outboard}
       model: outer_race_control        # or full
       dynamic_load_rating_N: null      # catalogue C of ONE bearing; null: ISO 281 from geometry
       reliability_percent: 90.0        # L_n = a_1 L_10
 
 ``preload``: ``position`` - ``axial_um`` is the total axial approach clamping imposes on the set
 beyond first contact (catalogue preload offset), half of it taken by each opposed group; needs
-DB or DF.  ``spring`` - ``axial_N`` is the constant force on the floating outer rings (the rows
-with the last row's thrust direction; all rows of a single bearing or tandem set).
+DB or DF.  ``spring`` - ``axial_N`` is the constant force on the floating outer rings: the rows
+with the thrust direction of the set's end row on the ``floating`` side (all rows of a single
+bearing or tandem set).  ``floating: outboard`` (default) is the side facing the nearer end of
+the shaft (where the springs of a rear set usually sit), ``inboard`` the other; ``+z`` / ``-z``
+name the side in the deck's frame.  A bearing at the middle of the shaft, and the standalone
+``bearing`` section, take outboard as +z.
 
 Standalone section (``spindlesim bearing``), the same keys plus::
 
@@ -71,6 +75,12 @@ class PositionPreload(DeckModel):
 class SpringPreload(DeckModel):
     kind: Literal["spring"]
     axial_N: PositiveFloat
+    # which rows float: those with the thrust direction of the set's end row on this side; outboard /
+    # inboard: the side facing the nearer / farther end of the shaft (resolved by ``placed``)
+    floating: Literal["outboard", "inboard", "+z", "-z"] = "outboard"
+
+
+SIDES = {"+z": 1, "-z": -1}
 
 
 PreloadSpec = Annotated[Union[PositionPreload, SpringPreload], Field(discriminator="kind")]
@@ -217,7 +227,18 @@ def preload_from(entry: _BallKeys):
         return Preload()
     if isinstance(pre, PositionPreload):
         return Preload("position", axial_m=1e-6 * pre.axial_um)
-    return Preload("spring", axial_N=pre.axial_N)
+    return Preload("spring", axial_N=pre.axial_N, floating_side=SIDES.get(pre.floating, 1))
+
+
+def placed(entry: BallBearingEntry, node_z_m: float, shaft_z_m: tuple[float, float]) -> BallBearingEntry:
+    """The entry with ``floating: outboard / inboard`` resolved to the side along z, from where the
+    bearing sits on the shaft (its node's z within the shaft's [z_min, z_max])."""
+    pre = entry.preload
+    if not isinstance(pre, SpringPreload) or pre.floating in SIDES:
+        return entry
+    outboard = "+z" if node_z_m >= 0.5 * (shaft_z_m[0] + shaft_z_m[1]) else "-z"
+    side = outboard if pre.floating == "outboard" else ("-z" if outboard == "+z" else "+z")
+    return entry.model_copy(update={"preload": pre.model_copy(update={"floating": side})})
 
 
 def preload_unit_to_si(entry: _BallKeys, value: float) -> float:
