@@ -7,7 +7,8 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
 @deck_argument
 @outdir_option
 @report_options
-@click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
+@click.option("--speed", "speed_rpm", type=click.FloatRange(min=0.0), default=None,
+              help="Spin speed [rpm], >= 0 (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Complex receptance between the deck's frf input and output (magnitude/phase, real/imaginary)."""
     run_and_report("frf", deck, outdir, "spindle", {"speed_rpm": speed_rpm})

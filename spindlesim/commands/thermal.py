@@ -9,7 +9,8 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
 @deck_argument
 @outdir_option
 @report_options
-@click.option("--speed", "speed_rpm", type=float, default=None, help="Spin speed [rpm] (default: deck).")
+@click.option("--speed", "speed_rpm", type=click.FloatRange(min=0.0), default=None,
+              help="Spin speed [rpm], >= 0 (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Thermal equilibrium of every three_lobe/plain bearing (heat generated in the film = heat carried by the
     oil + heat through the housing; the effective viscosity at the mean film temperature): thermal.h5."""

@@ -237,6 +237,16 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     return bad + work_checks(d)
 
 
+def require_section(loaded: LoadedDeck, section: str, analysis: str, keys: str) -> Any:
+    """The deck's ``section`` (e.g. ``chatter``), or a deck error (exit 2) saying the analysis needs it and
+    what it holds (``keys``); docs/deck-format.md describes every section."""
+    value = getattr(loaded.deck, section, None)
+    if value is None:
+        raise DeckError([DeckIssue(loaded.source, 1, 1, section, f"the {analysis} analysis needs a '{section}' "
+                                   f"section ({keys}); see docs/deck-format.md")])
+    return value
+
+
 def require_rotor(loaded: LoadedDeck, analysis: str) -> None:
     """Rotor analyses need a rotor (``shaft`` or ``journal``), ``operating`` and bearings that hold the
     rotor; raise a located DeckError otherwise (a singular stiffness matrix is a deck error)."""

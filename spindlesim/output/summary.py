@@ -199,6 +199,9 @@ def _thermal(f):
     from ..bearings.fluidfilm.viscosity import OIL_MAX_C
 
     lines, data = _per_bearing(f, "thermal", fields)
+    iso = [n for n, g in f["thermal"].items() if "not_computed" in g.attrs]
+    if iso:
+        lines.append(f"  {', '.join(iso)}: isoviscous film, no heat balance (the oil has no density and specific heat)")
     hot = [n for n, row in data.items() if row.get("temperature_mean_C", 0.0) > OIL_MAX_C]
     if hot:
         lines.append(f"  WARNING: {', '.join(hot)} above {OIL_MAX_C:g} C mean film temperature (beyond a mineral "

@@ -97,7 +97,9 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
             from .dtrb import run_dtrb
 
             return run_dtrb(loaded, outdir, run_info, opts, progress)
-        raise ValueError("the deck has no 'bearing' section (type: ball) and no 'dtrb' section")
+        from ..deck import require_section
+
+        require_section(loaded, "bearing", "bearing", "type: ball and its geometry, or a 'dtrb' section")
     from ..bearings.ball.plots import figures
     from ..bearings.ball.sweeps import run as run_ball
     from ..output.figures import save_figure

@@ -26,10 +26,10 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     from ..chatter import build_chatter, run_chatter, stability_lobes
     from ..chatter.section import ChatterSpec
 
+    from ..deck import require_section
+
     d = loaded.deck
-    if d.chatter is None:
-        raise ValueError("the deck has no 'chatter' section (operation, cutting coefficients, speeds_rpm; "
-                         "see docs/deck-format.md)")
+    require_section(loaded, "chatter", "chatter", "operation, cutting coefficients, speeds_rpm, frf")
     base = Path(loaded.source).parent if not loaded.source.startswith("<") else Path.cwd()
     spec: ChatterSpec = build_chatter(d.chatter, base)
     opts = options or {}

@@ -98,9 +98,9 @@ def run_contact(loaded: Any, outdir: Path, run: Any, options: dict | None = None
     from ..contact.plots import pressure_map_figure, roller_profile_figure
     from ..output.drawing import draw
 
-    sec = getattr(loaded.deck, "contact", None)
-    if sec is None:
-        raise ValueError("the deck has no 'contact' section (load_N, roller_radius_mm, ...)")
+    from ..deck import require_section
+
+    sec = require_section(loaded, "contact", "contact", "load_N, roller_radius_mm, profile, raceway, grid")
     res = solve_from_section(sec, options)
     if progress is not None:
         progress(1, 1)

@@ -33,9 +33,9 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
     from ..bearings.dtrb.section import geometry_from
     from ..output.drawing import draw
 
-    sec = loaded.deck.dtrb
-    if sec is None:
-        raise ValueError("the deck has no 'dtrb' section")
+    from ..deck import require_section
+
+    sec = require_section(loaded, "dtrb", "dtrb", "bearing geometry, preload_um, speed_rpm, load, sweeps")
     opts = {k: v for k, v in (options or {}).items() if v is not None}
     preload = 1e-6 * float(opts.get("preload_um", sec.preload_um))
     speed = RPM * float(opts.get("speed_rpm", sec.speed_rpm))

@@ -37,12 +37,26 @@ def _fluid_bearings(loaded: Any):
     entries = [b for b in loaded.deck.bearings if b.type in FLUID_TYPES]
     if not entries:
         raise ValueError("the deck has no fluid-film bearing (type three_lobe or plain)")
-    for e in entries:
-        if e.load_N is None:
-            raise ValueError(
-                f"bearing {e.name!r}: give load_N (loads from the rotor's static equilibrium "
-                "are used by the rotor analyses, not by this command)")
     return [build(e) for e in entries]
+
+
+def _static_loads(loaded: Any, bearings: list, om: float) -> dict[str, np.ndarray | None]:
+    """Each bearing's load: ``load_N`` where the deck gives it (None here), else what the shaft puts on
+    it at the rotor's static equilibrium at this speed (a located deck error without a rotor)."""
+    if all(b.load_N is not None for b in bearings):
+        return {b.name: None for b in bearings}
+    from ..analysis.operating import operating_state
+    from ..deck import DeckError, require_rotor
+    from ..model.build import build_rotor
+
+    d = loaded.deck
+    if d.shaft is None and d.journal is None:
+        raise DeckError([loaded.issue(("bearings", i), f"bearing {e.name!r} has no load_N and the deck no rotor "
+                                      "(shaft or journal) whose static equilibrium would load it: give load_N")
+                         for i, e in enumerate(d.bearings) if e.type in FLUID_TYPES and e.load_N is None])
+    require_rotor(loaded, "thermal equilibrium from the rotor's static loads")
+    state = operating_state(build_rotor(d), om * 30.0 / math.pi)
+    return {b.name: None if b.load_N is not None else state.load_of(b.name) for b in bearings}
 
 
 def _speed_rad_s(loaded: Any, options: dict) -> float:
@@ -60,9 +74,10 @@ def _speed_rad_s(loaded: Any, options: dict) -> float:
 def _analyze_all(loaded, options, progress):
     bearings = _fluid_bearings(loaded)
     om = _speed_rad_s(loaded, options)
+    loads = _static_loads(loaded, bearings, om)
     out = []
     for i, b in enumerate(bearings):
-        res = b.analyze(om)
+        res = b.analyze(om, loads[b.name])
         f = res.film
         log.info("%s: mean film %.2f degC, mu %.4g Pa s, S %.4g, e/Cb %.4f, attitude %.1f deg",
                  b.name, res.temperature_mean_C, f.viscosity_Pa_s, f.sommerfeld,
@@ -79,6 +94,21 @@ def _analyze_all(loaded, options, progress):
     return out, om
 
 
+def _present(entries: dict, r: Any, group_attrs: dict) -> dict:
+    """The datasets of one bearing without the quantities its model does not give: an isoviscous film
+    whose oil has no density and specific heat has no heat balance, so its temperatures, heat flows
+    and Reynolds number are absent (named in the group attribute ``not_computed``), not NaN."""
+    if not r.isoviscous:
+        return entries
+    absent = [k for k, v in entries.items()
+              if np.ndim(v[0] if isinstance(v, tuple) else v.value) == 0
+              and not np.isfinite(float(v[0] if isinstance(v, tuple) else v.value))]
+    if absent:
+        group_attrs["not_computed"] = (", ".join(k.rsplit("/", 1)[1] for k in absent)
+                                       + ": isoviscous film without the oil's density and specific heat (no heat balance)")
+    return {k: v for k, v in entries.items() if k not in absent}
+
+
 def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None,
                 progress: Any = None) -> list[Path]:
     """Thermal equilibrium of every fluid-film bearing; thermal.h5 and pressure PNGs."""
@@ -92,7 +122,7 @@ def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None
     for b, r in results:
         f = r.film
         g = f"/thermal/{b.name}"
-        ds.update({
+        entries = {
             f"{g}/temperature_mean_C": (r.temperature_mean_C, "degC", ()),
             f"{g}/temperature_out_C": (r.temperature_out_C, "degC", ()),
             f"{g}/temperature_in_C": (r.temperature_in_C, "degC", ()),
@@ -116,9 +146,11 @@ def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None
             f"{g}/load_N": Data(f.load_N, "N", ("load",), "load on the bearing (x horizontal, y vertical)"),
             f"{g}/journal_position_m": Data(f.position_m, "m", ("dof",), "journal centre (x horizontal, y vertical)"),
             **labels(g, "dof", XY), **labels(g, "load", FXY),
-        })
-        attrs[g] = {"type": "isoviscous" if r.isoviscous else "thermal equilibrium",
-                    "node": b.node + 1, "housing_conductance_W_K": r.housing_conductance_W_K}
+        }
+        ds.update(_present(entries, r, attrs.setdefault(g, {})))
+        attrs[g].update({"type": "isoviscous" if r.isoviscous else "thermal equilibrium", "node": b.node + 1})
+        if math.isfinite(r.housing_conductance_W_K):
+            attrs[g]["housing_conductance_W_K"] = r.housing_conductance_W_K
     paths = [write_h5(Path(outdir) / "thermal.h5", run, ds, attrs)]
     for b, r in results:
         paths.append(draw(Path(outdir) / f"thermal_pressure_{b.name}.png", pressure_figure, r.film, f"{b.name}"))
@@ -141,7 +173,7 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
         f = r.film
         g = f"/coefficients/{b.name}"
         ld, lf = ("load", "dof"), ("load_frame_load", "load_frame_dof")
-        ds.update({
+        entries = {
             f"{g}/K_N_m": Data(f.K_N_m, "N/m", ld, "K[load, dof] = -dF/dq, x-y frame"),
             f"{g}/C_Ns_m": Data(f.C_Ns_m, "N s/m", ld, "C[load, dof] = -dF/dv, x-y frame"),
             f"{g}/k": Data(f.k, "1", ld, "K Cp / W, x-y frame"),
@@ -156,8 +188,9 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
             **labels(g, "dof", XY), **labels(g, "load", FXY),
             **labels(g, "load_frame_dof", LOAD_FRAME, "along the load, 90 deg ahead in the direction of rotation"),
             **labels(g, "load_frame_load", LOAD_FRAME, "along the load, 90 deg ahead in the direction of rotation"),
-        })
+        }
         attrs[g] = {"node": b.node + 1}
+        ds.update(_present(entries, r, attrs[g]))
     paths = [write_h5(Path(outdir) / "coefficients.h5", run, ds, attrs)]
     for b, r in results:
         S0 = r.film.sommerfeld

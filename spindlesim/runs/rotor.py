@@ -8,7 +8,7 @@ import logging
 import numpy as np
 
 from ..deck.document import NodeDof
-from ..deck.loader import require_rotor
+from ..deck.loader import require_rotor, require_section
 from ..model.build import build_rotor
 from ..output.drawing import draw
 from .common import first, plots_wanted, value_range
@@ -120,9 +120,7 @@ def run_unbalance(loaded, outdir, run, opts, progress):
 
     require_rotor(loaded, "unbalance")
     d = loaded.deck
-    u = d.unbalance
-    if u is None:
-        raise ValueError("the deck has no 'unbalance' section (node, amount_g_mm, speeds_rpm)")
+    u = require_section(loaded, "unbalance", "unbalance", "node, amount_g_mm, output, speeds_rpm")
     rotor = build_rotor(d)
     res = solve_unbalance(rotor, value_range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
                           u.output.node, u.output.dof)

@@ -111,12 +111,32 @@ def test_thermal_and_coefficients_commands(tmp_path):
     assert (out / "coefficients_front.png").stat().st_size > 1000
 
 
-def test_command_without_load_fails_cleanly(tmp_path):
+def test_command_without_load_and_without_rotor_is_a_located_deck_error(tmp_path):
     from spindlesim.commands.thermal import command as thermal
 
     deck = tmp_path / "ff.yaml"
     deck.write_text(DECK.replace("    load_N: 400\n", ""))
     r = CliRunner().invoke(thermal, [str(deck), "-o", str(tmp_path / "o")])
-    assert r.exit_code == 1
-    assert "load_N" in r.output
+    assert r.exit_code == 2
+    assert "ff.yaml:3:" in r.output and "bearings[0]" in r.output and "load_N" in r.output
     assert not (tmp_path / "o" / "thermal.h5").exists()
+
+
+def test_without_load_N_the_load_comes_from_the_rotor_static_equilibrium(tmp_path):
+    """Jeffcott rotor on two plain bearings, weight only (decks/validation/jeffcott_plain.yaml): each
+    bearing carries half the weight of the 14.80 kg disk and the 11.56 kg shaft (50 mm x 300 mm steel,
+    7850 kg/m3), (14.80 + 11.56) x 9.80665 / 2 = 129.2 N, vertically."""
+    from pathlib import Path
+
+    from spindlesim.commands.thermal import command as thermal
+
+    deck = Path(__file__).parents[2] / "decks" / "validation" / "jeffcott_plain.yaml"
+    r = CliRunner().invoke(thermal, [str(deck), "-o", str(tmp_path / "o"), "-q"])
+    assert r.exit_code == 0, r.output
+    shaft = 7850.0 * math.pi / 4 * 0.05**2 * 0.3
+    with h5py.File(tmp_path / "o" / "thermal.h5") as f:
+        for name in ("left", "right"):
+            np.testing.assert_allclose(f[f"thermal/{name}/load_N"][()], [0.0, -(14.80 + shaft) * 9.80665 / 2],
+                                       rtol=1e-6, atol=1e-6)
+            assert "temperature_mean_C" not in f[f"thermal/{name}"]  # isoviscous, no density: no heat balance
+            assert "temperature_mean_C" in f[f"thermal/{name}"].attrs["not_computed"]
