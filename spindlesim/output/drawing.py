@@ -98,14 +98,26 @@ def figure_process(enabled: bool = True) -> Iterator[bool]:
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
+    import signal
+
+    # Ctrl-C held back while the child is made: it starts with SIGINT blocked and ignores it before
+    # unblocking (a Ctrl-C in between would otherwise kill it in its start-up); here a Ctrl-C that
+    # came meanwhile is delivered when the block is lifted, right after the fork
+    masked = hasattr(signal, "pthread_sigmask")
+    if masked:
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
     try:
         executor = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"),
                                        initializer=_start_child, initargs=(os.getpid(),))
         executor.submit(int)  # makes the child now (fork), before this process starts any thread
     except (OSError, ImportError) as exc:  # no process to spare, no POSIX semaphores (/dev/shm): draw here
         log.info("no figure process (%s); figures are drawn in the main process", exc)
+        if masked:
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
         yield False
         return
+    if masked:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
     _executor = executor
     try:
         yield True
@@ -132,6 +144,8 @@ def _start_child(parent: int) -> None:
     import signal
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # blocked by the parent around the fork
     threading.Thread(target=_exit_with_parent, args=(parent,), daemon=True, name="figure-process-watchdog").start()
     from . import figures
 
