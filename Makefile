@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out
 
-.PHONY: run test fuzz bench venv install install-test clean golden
+.PHONY: run test test-fast fuzz bench venv install install-test clean golden
 
 $(BIN)/python:
 	$(PY) -m venv $(VENV)
@@ -25,6 +25,10 @@ run: install
 
 test: install-test
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python -m pytest
+
+# The developers' lane: everything but the tests marked slow (long physics checks, real processes, every deck).
+test-fast: install-test
+	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python -m pytest -m "not slow"
 
 # Property tests of the deck loader with many more examples than `make test` (about 10 minutes);
 # FUZZ=long for ten times as many.  A failure prints the deck text that reproduces it.

@@ -60,6 +60,7 @@ def test_modal_options_and_attrs(tmp_path):
         assert np.all(np.diff(f["/modal/frequency_hz"][()]) >= 0)
 
 
+@pytest.mark.slow
 def test_run_writes_every_analysis(tmp_path):
     res = CliRunner().invoke(main, ["run", "-o", str(tmp_path)])
     assert res.exit_code == 0, res.output
@@ -123,6 +124,7 @@ def test_version_and_help_do_not_import_numerics():
 ROTOR_DECKS = ["seed001_dtrb_rotor", "milling_spindle", "seed003_three_lobe", "seed003_spindle_linear"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("deck", ROTOR_DECKS)
 def test_unbalance_sweep_on_every_rotor_deck(deck, tmp_path):
     """The example rotor decks through a speed sweep that re-solves every bearing's state at each speed

@@ -11,6 +11,7 @@ from importlib import resources
 from pathlib import Path
 
 import h5py
+import pytest
 from click.testing import CliRunner
 
 from spindlesim.cli import main
@@ -57,6 +58,7 @@ def _blowing_up_deck(tmp_path) -> Path:
     return deck
 
 
+@pytest.mark.slow
 def test_sigint_on_a_transient_exits_130_and_marks_the_files_incomplete(tmp_path):
     out = tmp_path / "out"
     proc = subprocess.Popen([str(SPINDLESIM), "transient", "--model", "flexible_race", "--duration", "3", "-o",

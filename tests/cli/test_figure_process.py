@@ -44,6 +44,7 @@ def _alive(pid: int) -> bool:
         return False
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("command", [["modal"], ["frf"], ["campbell", "--speeds", "0:12000:6"]])
 def test_figures_from_the_figure_process_equal_those_drawn_in_the_main_process(tmp_path, command):
     deck = tmp_path / "linear.yaml"
@@ -58,6 +59,7 @@ def test_figures_from_the_figure_process_equal_those_drawn_in_the_main_process(t
         assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes(), name
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("figure_process", ["1", "0"])
 def test_a_figure_that_cannot_be_written_is_a_message_and_exit_1(tmp_path, figure_process):
     deck = tmp_path / "linear.yaml"
@@ -111,6 +113,7 @@ def test_a_killed_run_leaves_no_figure_process(tmp_path):
     assert not _alive(child), "the figure process outlived its parent"
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not LINUX, reason="reads /proc")
 @pytest.mark.parametrize("delay_s", [0.0, 1.0])  # at once: while the command still imports and reads the deck
 def test_ctrl_c_exits_130_with_no_process_or_temporary_file_left(tmp_path, delay_s):

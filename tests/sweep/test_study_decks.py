@@ -25,6 +25,7 @@ def test_study_deck_cases_validate(path):
         parse_deck(c.deck_text, f"{path.name} case {c.index}")
 
 
+@pytest.mark.slow
 def test_seed003_speed_study_runs_and_coefficients_change(tmp_path):
     from spindlesim.sweep import run_sweep
     from spindlesim.sweep.report import scalar_table

@@ -52,6 +52,7 @@ def _freqs(res):
     return np.array([r["scalars"]["modal/f3_hz"] for r in res.records])
 
 
+@pytest.mark.slow
 def test_process_pool_and_dask_give_identical_results(tmp_path):
     pytest.importorskip("distributed")
     cases = build_cases(DECK, {"operating.speed_rpm": [0, 6000, 12000]}, "modal", options={"plots": False})
@@ -73,6 +74,7 @@ def test_resume_runs_only_missing_cases(tmp_path):
     assert len(again.skipped) == 2
 
 
+@pytest.mark.slow
 def test_killed_sweep_completes_only_missing_cases_on_rerun(tmp_path):
     out = tmp_path / "sw"
     cmd = [sys.executable, "-m", "spindlesim", "sweep", LINEAR_DECK, "--analysis", "modal", "--workers", "1",

@@ -59,6 +59,7 @@ def _h5_complete(path: Path) -> bool:
         return bool(f.attrs["complete"])
 
 
+@pytest.mark.slow
 def test_ctrl_c_stops_a_sweep_and_the_resumed_study_equals_a_clean_run(tmp_path):
     deck, out = _tiny_study(tmp_path), tmp_path / "resumed"
     env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
@@ -129,6 +130,7 @@ def _frequencies(res) -> np.ndarray:
     return np.array([r["scalars"]["modal/f3_hz"] for r in res.records])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scheduler", [None, "local"], ids=["process_pool", "dask"])
 def test_interrupt_while_waiting_records_no_unfinished_case_as_done(tmp_path, scheduler):
     if scheduler is not None:

@@ -115,6 +115,7 @@ def _text(v):
     return v.decode() if isinstance(v, bytes) else str(v)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(CASES))
 def test_file_modes_under_umask_022(outputs, name):
     """Every .h5 and .png the command wrote (all files in its folder, returned or not) is 0644 under

@@ -76,6 +76,7 @@ def _energy(p, traj, b, load):
     return ke + pe + load * traj.x[:, 1]
 
 
+@pytest.mark.slow
 def test_energy_conserved_without_damping_and_friction():
     r = dataclasses.replace(rotor(rollers=5), ground_damping_Ns_m=0.0)
     b = r.bearings[0]

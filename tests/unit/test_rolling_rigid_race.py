@@ -59,6 +59,7 @@ def test_compiled_force_equals_numpy():
         assert out == pytest.approx(ref, rel=1e-13, abs=1e-12)
 
 
+@pytest.mark.slow
 def test_energy_conserved_at_rest_and_converges():
     # zero speed, no damping: a conservative 2-DOF oscillator on Hertz springs, released from a push
     b = bearing()

@@ -28,6 +28,7 @@ def _run(deck):
     return rotor, simulate(rotor, settings)
 
 
+@pytest.mark.slow
 def test_transient_peaks_match_linearised_natural_frequencies():
     """Free vibration (a released 500 N force at the disk) on top of the unbalance response: the two
     strongest spectral lines at the DTRB node are the first backward/forward pair of the modal

@@ -60,6 +60,7 @@ def tables(cache):
     return {k: TableFilmForce(v[0], *GRID, RES, cache) for k, v in CASES.items()}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", list(CASES))
 def test_table_force_within_bounds_of_exact(name, tables):
     geo, max_err, rms_err = CASES[name]

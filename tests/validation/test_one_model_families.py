@@ -304,6 +304,7 @@ def free_decay(deck: str):
     return simulate(rotor, excite(rotor, C_CASES[deck]))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("deck", list(C_CASES))
 def test_c_free_decay_shows_the_modal_frequencies(deck):
     rotor, cfg = rotor_of(deck), C_CASES[deck]

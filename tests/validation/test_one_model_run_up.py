@@ -30,6 +30,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+import pytest
 from scipy.optimize import minimize_scalar
 
 from spindlesim.analysis.frf import solve_unbalance
@@ -99,6 +100,7 @@ def test_the_variant_has_a_lightly_damped_first_forward_critical_in_the_ramp():
     assert lin.damping_ratio[0] > 0.5 and lin.frequency_hz[2] * 60 > 12000
 
 
+@pytest.mark.slow
 def test_slow_run_up_peaks_at_the_unbalance_peak_and_a_fast_one_later():
     n_ss, a_ss = steady_peak()  # measured 3422.2 rpm, 4.226e-5 m
     n_slow, a_slow = run_up(8.0)

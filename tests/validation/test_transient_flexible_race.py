@@ -36,6 +36,7 @@ def band(res, channel, harmonic):
     return float(res.spectrum.amplitude[sel, channel].max())
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("rollers, f_rp_ref, channels", [(5, 166.1, (0, 1)), (8, 265.8, (0, 1)), (12, 398.7, (0,))])
 def test_dominant_line_at_roller_pass_frequency(rollers, f_rp_ref, channels):
     res = simulate(flexible(rollers), TransientSettings(0.3, method="rk4", settle_s=0.1))
@@ -56,6 +57,7 @@ def test_dominant_line_at_roller_pass_frequency(rollers, f_rp_ref, channels):
     assert Q.min() >= 0 and Q.max() > 6.0 / rollers
 
 
+@pytest.mark.slow
 def test_response_converges_as_the_step_shrinks():
     rotor = flexible(8)
     runs = [simulate(rotor, TransientSettings(0.15, method="rk4", settle_s=0.05, step_s=h)) for h in (1e-6, 0.5e-6)]
