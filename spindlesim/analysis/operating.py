@@ -56,7 +56,10 @@ def _freeze(b, speed: float, load, transient: bool):
     try:
         return b.at_operating_point(speed, load, transient)
     except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
-        raise BearingSolveError(f"bearing {b.name!r} at {speed / RPM:.6g} rpm: {exc}") from exc
+        text = str(exc)
+        own = f"bearing {b.name!r}: "
+        text = text[len(own):] if text.startswith(own) else text  # the bearing named once
+        raise BearingSolveError(f"bearing {b.name!r} at {speed / RPM:.6g} rpm: {text}") from exc
 
 
 @dataclass(frozen=True)
@@ -130,7 +133,8 @@ def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
     raise SingularRotorError(f"the stiffness matrix of {what} is singular: the rotor is not held against "
                              "rigid-body motion in the direction of its loads (the bearings must support x and y "
                              "at two nodes, or at one node with moment stiffness; an axial load needs an axial "
-                             "support)")
+                             "support), or its stiffnesses differ by more than 1e11 (a unit mistake: shaft "
+                             "dimensions in metres under _mm keys, a stiffness in N/mm under an N/m key)")
 
 
 def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMatrices | None = None,

@@ -84,6 +84,11 @@ RADIAL = ("x", "y")
 FIVE = ("x", "y", "z", "theta_x", "theta_y")
 
 
+class SpeedRequiredError(ValueError):
+    """A bearing that carries load only while the shaft turns (a fluid film) was asked to at rest: an input
+    to correct (the speed of the deck or the command line), not a solver failure."""
+
+
 @runtime_checkable
 class Bearing(Protocol):
     """The contract of the module docstring (static type checking and documentation)."""

@@ -50,8 +50,35 @@ def load_or_default(deck: Path | None, default_name: str):
     return loaded
 
 
+def exit_code_of(exc: BaseException) -> int:
+    """A failure's exit code: 2 where the input describes a rotor that cannot be solved as given (not held,
+    stiffnesses apart by a unit mistake, a fluid film at rest), else 1 (a solver failure)."""
+    from ..analysis.operating import SingularRotorError
+    from ..bearings.base import SpeedRequiredError
+
+    seen: BaseException | None = exc
+    while seen is not None:  # through the chain: a bearing's failure wrapped by the solver that met it
+        if isinstance(seen, (SingularRotorError, SpeedRequiredError)):
+            return 2
+        seen = seen.__cause__
+    return 1
+
+
+def unit_hint(loaded) -> str:
+    """Appended to a solver failure of a deck with plausibility warnings: they are the likely cause."""
+    n = len(loaded.warnings)
+    return (f" (the deck has {n} plausibility warning{'s' if n > 1 else ''} above, e.g. a value that looks like "
+            "another unit: check them first)") if n else ""
+
+
 def report_deck_error(exc, note: str = "") -> None:
-    """Print every located deck issue and exit with code 2."""
+    """Print every located deck issue and exit with code 2 (with ``--json`` also on stdout as JSON:
+    {"errors": [{"file", "line", "column", "key", "message", "severity"}, ...], "exit_code": 2})."""
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.meta.get("spindlesim.report") == "json":
+        click.echo(json.dumps({"errors": [{"file": i.file, "line": i.line, "column": i.col, "key": i.path,
+                                           "message": i.message, "severity": i.severity} for i in exc.issues],
+                               "exit_code": 2}))
     for issue in exc.issues:
         click.echo(str(issue), err=True)
     total = getattr(exc, "total", len(exc.issues))
@@ -61,8 +88,22 @@ def report_deck_error(exc, note: str = "") -> None:
     sys.exit(2)
 
 
-def resolve_outdir(outdir: Path | None, loaded) -> Path:
-    return outdir if outdir is not None else Path("out") / loaded.stem
+def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
+    """The output folder (``-o``, else out/<deck stem>[/sub]), made and checked writable before anything
+    is computed: a folder that cannot be written is one line and exit code 2, not a failure after the
+    computation."""
+    import tempfile
+
+    out = outdir if outdir is not None else Path("out") / loaded.stem / sub
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=out):
+            pass
+    except OSError as exc:
+        click.echo(f"spindlesim: cannot write to the output folder {out}: {exc.strerror or exc}; nothing was "
+                   "computed (give a writable folder with -o)", err=True)
+        sys.exit(2)
+    return out
 
 
 def progress_reporter(label: str) -> tuple[Callable[[int, int], None], Callable[[], None]]:
@@ -175,11 +216,19 @@ def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_n
     # --- end run status ---
     except (ValueError, ArithmeticError, RuntimeError) as exc:  # numpy's LinAlgError is a ValueError
         close()
-        click.echo(f"spindlesim {name}: {exc}", err=True)
-        sys.exit(1)
+        fail(f"spindlesim {name}: {exc}{unit_hint(loaded)}", exit_code_of(exc))
     except OSError as exc:  # a file that cannot be written (disk full, a directory in the way, permissions)
         close()
-        click.echo(f"spindlesim {name}: cannot write the results: {exc}", err=True)
-        sys.exit(1)
+        fail(f"spindlesim {name}: cannot write the results: {exc}", 1)
     close()
     print_results(paths)
+
+
+def fail(message: str, code: int) -> None:
+    """A run that wrote nothing: the message on stderr (and with ``--json`` as {"error", "exit_code"} on
+    stdout), then exit ``code``."""
+    ctx = click.get_current_context(silent=True)
+    if ctx is not None and ctx.meta.get("spindlesim.report") == "json":
+        click.echo(json.dumps({"error": message, "exit_code": code}))
+    click.echo(message, err=True)
+    sys.exit(code)

@@ -26,7 +26,7 @@ def _run(deck, outdir) -> None:
     from ..runs import default_analyses, run_analysis, run_info_for
     from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, IncompleteRun
     from ..deck import DeckError
-    from .common import print_results, report_deck_error
+    from .common import print_results, report_deck_error, unit_hint
 
     loaded = load_or_default(deck, "spindle")
     out = resolve_outdir(outdir, loaded)
@@ -46,7 +46,7 @@ def _run(deck, outdir) -> None:
         except KeyboardInterrupt:
             _stop(names, name, written)
         except (ValueError, ArithmeticError, RuntimeError, OSError) as exc:  # LinAlgError is a ValueError
-            click.echo(f"spindlesim run: {name} failed: {exc}", err=True)
+            click.echo(f"spindlesim run: {name} failed: {exc}{unit_hint(loaded)}", err=True)
             failed.append(name)
     print_results(written)
     if failed:

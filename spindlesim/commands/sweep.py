@@ -1,6 +1,5 @@
 """``spindlesim sweep DECK``: a parameter study over any deck value, on a process pool or Dask."""
 
-import contextlib
 import logging
 import sys
 from collections import Counter
@@ -41,7 +40,7 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     from ..sweep import build_cases, parse_set_option, run_sweep
     from ..sweep.cases import parse_values
     from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, EXIT_INTERRUPTED
-    from ..sweep.execution import sigint_ignored
+    from ..sweep.execution import sigint_deferred, sigint_ignored
     from ..sweep.report import plot_overlay, plot_scalars, summary_table, write_summary
     from ..sweep.runner import SweepInterrupted
     from .common import report_deck_error
@@ -77,7 +76,7 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
             bad.extend(exc.issues)
     if bad:
         report_deck_error(DeckError(bad))
-    out = Path(outdir) if outdir else resolve_outdir(None, loaded) / "sweep"
+    out = resolve_outdir(Path(outdir) if outdir else None, loaded, "sweep")
 
     def progress(done, total, eta):
         click.echo(f"sweep: {done}/{total} cases, about {eta:.0f} s left", err=True)
@@ -87,21 +86,18 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
         res = run_sweep(cases, out, workers=workers, scheduler=scheduler, progress=progress)
     except SweepInterrupted as exc:
         res = exc.result
-    run = run_info_for(loaded, " ".join(sys.argv))
-    title = f"{loaded.deck.title}\n{_operating_text(loaded.deck)}{len(cases)} cases of {analysis}"
-    try:
-        with sigint_ignored() if res.interrupted else contextlib.nullcontext():
-            paths = [write_summary(res, run, analysis), plot_scalars(res, out / "sweep_scalars.png", title=title),
-                     plot_overlay(res, analysis, out / f"sweep_{analysis}_overlay.png", title=title)]
-    except KeyboardInterrupt:  # every case is recorded; the summary is rewritten by the next run
-        click.echo(f"sweep: interrupted while writing the summary (exit code {EXIT_INTERRUPTED})", err=True)
-        sys.exit(EXIT_INTERRUPTED)
-    try:
-        lines, data = summary_table(res, max_scalars=4)
-    except Exception as exc:  # a summary must never hide the results themselves
-        logging.getLogger("spindlesim").warning("sweep results table unavailable: %s", exc)
-        lines, data = [], {}
-    _print_results([p for p in paths if p is not None], lines, data)
+    # every case is recorded: a Ctrl-C now waits until sweep.h5, its plots and the table are out
+    with sigint_ignored() if res.interrupted else sigint_deferred() as late:
+        run = run_info_for(loaded, " ".join(sys.argv))
+        title = f"{loaded.deck.title}\n{_operating_text(loaded.deck)}{len(cases)} cases of {analysis}"
+        paths = [write_summary(res, run, analysis), plot_scalars(res, out / "sweep_scalars.png", title=title),
+                 plot_overlay(res, analysis, out / f"sweep_{analysis}_overlay.png", title=title)]
+        try:
+            lines, data = summary_table(res, max_scalars=4)
+        except Exception as exc:  # a summary must never hide the results themselves
+            logging.getLogger("spindlesim").warning("sweep results table unavailable: %s", exc)
+            lines, data = [], {}
+        _print_results([p for p in paths if p is not None], lines, data)
     not_done = [r for r in res.records if r.get("status") != "done"]
     counts = ", ".join(f"{n} {s}" for s, n in Counter(r.get("status") for r in not_done).items())
     click.echo(f"sweep: {len(res.ran)} run, {len(res.skipped)} already finished"
@@ -111,6 +107,10 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
             click.echo(f"  case {r.get('index')} {r.get('parameters')}: {r.get('error', '').splitlines()[0]}", err=True)
     if res.interrupted:
         click.echo(f"sweep: interrupted; sweep.h5 is marked incomplete. Run the same command again to finish "
+                   f"(exit code {EXIT_INTERRUPTED})", err=True)
+        sys.exit(EXIT_INTERRUPTED)
+    if getattr(late, "interrupted", False):
+        click.echo(f"sweep: interrupted after the cases finished; sweep.h5 and its plots are written "
                    f"(exit code {EXIT_INTERRUPTED})", err=True)
         sys.exit(EXIT_INTERRUPTED)
     if any(r.get("status") == "failed" for r in not_done):

@@ -67,7 +67,10 @@ def _speed_rad_s(loaded: Any, options: dict) -> float:
             raise ValueError("no speed: give operating.speed_rpm in the deck or --speed")
         rpm = op.speed_rpm
     if not rpm > 0:
-        raise ValueError(f"a fluid-film bearing needs a positive speed (got {rpm} rpm)")
+        from ..bearings.base import SpeedRequiredError
+
+        raise SpeedRequiredError(f"a fluid-film bearing needs a positive speed (got {rpm:g} rpm): give "
+                                 "operating.speed_rpm > 0 or --speed")
     return float(rpm) * math.pi / 30.0
 
 

@@ -46,6 +46,31 @@ def sigint_ignored() -> Iterator[None]:
         signal.signal(signal.SIGINT, previous)
 
 
+class Deferred:
+    """What :func:`sigint_deferred` saw: ``interrupted`` once a Ctrl-C arrived inside it."""
+
+    interrupted = False
+
+
+@contextlib.contextmanager
+def sigint_deferred() -> Iterator[Deferred]:
+    """Hold Ctrl-C back while something short must finish (a summary file of finished work): a Ctrl-C
+    inside sets ``interrupted`` and the body goes on; the caller then stops with exit code 130."""
+    seen = Deferred()
+    if threading.current_thread() is not threading.main_thread():
+        yield seen
+        return
+
+    def note(signum, frame):
+        seen.interrupted = True
+
+    previous = signal.signal(signal.SIGINT, note)
+    try:
+        yield seen
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
 def stop_process_pool(ex: ProcessPoolExecutor, grace_s: float = GRACE_S) -> None:
     """Cancel the cases not started and end the worker processes now."""
     # no public handle on the workers before Python 3.14 (terminate_workers)
@@ -86,6 +111,7 @@ def make_executor(workers: int | None = None, scheduler: str | None = None) -> I
         from distributed import Client, LocalCluster
     except ImportError as exc:  # pragma: no cover - depends on the installation
         raise RuntimeError("--scheduler needs Dask: pip install 'spindlesim[dask]'") from exc
+    _quiet_dask()
     if scheduler == "local":
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
                                dashboard_address=None, silence_logs=logging.ERROR)
@@ -103,6 +129,17 @@ def make_executor(workers: int | None = None, scheduler: str | None = None) -> I
             _close_dask(client, cluster)
         raise
     _close_dask(client, cluster)
+
+
+def _quiet_dask() -> None:
+    """Dask's own log lines (scheduler and worker start-up, connections closed at shutdown) follow the
+    command's verbosity: none by default, its INFO lines with -v, DEBUG with -vv.  Importing distributed
+    sets its loggers' levels from its configuration, so this runs after the import.  A case that fails
+    is reported by the sweep itself, whatever Dask logs."""
+    root = logging.getLogger().getEffectiveLevel()
+    level = logging.CRITICAL if root > logging.INFO else root
+    for name in ("distributed", "tornado", "bokeh"):
+        logging.getLogger(name).setLevel(level)
 
 
 def _close_dask(client, cluster) -> None:

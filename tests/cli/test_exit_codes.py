@@ -126,3 +126,66 @@ def test_run_prints_a_results_summary_and_a_failure_exits_1(tmp_path):
     bad = CliRunner().invoke(main, ["run", str(deck), "-o", str(tmp_path / "bad")])
     assert bad.exit_code == 1, bad.output
     assert "static failed" in bad.output and "exit code 1" in bad.output
+
+
+@pytest.mark.parametrize("command", [["campbell", "--speeds", "0:6000:4"], ["run"], ["sweep", "--analysis", "modal",
+                                                                               "--set", "operating.speed_rpm=0:2000:2"]])
+def test_an_output_folder_that_cannot_be_written_is_exit_2_before_computing(tmp_path, command):
+    """-o below a regular file: no folder can be made there (as root too, where permissions do not stop a
+    write); one line, exit code 2, and nothing computed (the progress of the analysis never starts)."""
+    blocker = tmp_path / "a_file"
+    blocker.write_text("")
+    deck = tmp_path / "linear.yaml"
+    deck.write_text(LINEAR_DECK)
+    res = CliRunner().invoke(main, [command[0], str(deck), *command[1:], "-o", str(blocker / "out")])
+    assert res.exit_code == 2, res.output
+    assert "cannot write to the output folder" in res.output and "Traceback" not in res.output
+    assert "campbell: " not in res.output and "sweep: " not in res.output  # no progress: nothing was computed
+
+
+def test_input_errors_exit_2_with_one_clear_line(tmp_path):
+    """Issue 23: a fluid film asked to run at rest, and shaft dimensions in metres under _mm keys, are input
+    errors (exit 2), not solver failures; the fluid film's message names the bearing once; the metres case
+    points at the plausibility warnings instead of blaming the bearings alone; --json prints the error."""
+    at_rest = CliRunner().invoke(main, ["modal", "--speed", "0", "-o", str(tmp_path / "a")])
+    assert at_rest.exit_code == 2, at_rest.output
+    assert at_rest.output.count("bearing 'front'") == 1 and "needs a positive speed" in at_rest.output
+    thermal = CliRunner().invoke(main, ["thermal", "--speed", "0", "-o", str(tmp_path / "b")])
+    assert thermal.exit_code == 2 and "positive speed" in thermal.output
+    negative = CliRunner().invoke(main, ["static", "--speed", "-6000", "-o", str(tmp_path / "c")])
+    assert negative.exit_code == 2 and "--speed" in negative.output
+
+    import yaml
+
+    d = yaml.safe_load(LINEAR_DECK)
+    for row in d["shaft"]["elements"]:
+        row[0], row[1], row[2] = row[0] / 1000, row[1] / 1000, row[2] / 1000  # metres under _mm keys
+    deck = tmp_path / "metres.yaml"
+    deck.write_text(yaml.safe_dump(d))
+    res = CliRunner().invoke(main, ["static", str(deck), "-o", str(tmp_path / "d")])
+    assert res.exit_code == 2, res.output
+    assert "was it given in metres" in res.output and "plausibility warning" in res.output
+    js = _separate_streams().invoke(main, ["static", str(deck), "--json", "-o", str(tmp_path / "e")])
+    import json
+
+    assert json.loads(js.stdout)["exit_code"] == 2
+
+
+def test_json_on_a_deck_error_prints_the_errors_as_json(tmp_path):
+    import json
+
+    deck = tmp_path / "bad.yaml"
+    deck.write_text(LINEAR_DECK.replace("speed_rpm:", "speed_rpmm:", 1))
+    res = _separate_streams().invoke(main, ["modal", str(deck), "--json", "-o", str(tmp_path / "o")])
+    assert res.exit_code == 2
+    out = json.loads(res.stdout)
+    assert out["exit_code"] == 2 and out["errors"] and out["errors"][0]["line"] > 0
+    assert any("speed_rpm" in e["key"] + e["message"] for e in out["errors"])
+
+
+def _separate_streams() -> CliRunner:
+    """A runner whose ``stdout`` holds stdout alone (click 8.2+ always; 8.1 with mix_stderr=False)."""
+    try:
+        return CliRunner(mix_stderr=False)
+    except TypeError:
+        return CliRunner()

@@ -119,3 +119,26 @@ def test_bad_override_is_a_deck_error(tmp_path):
     assert res.exit_code == 2
     assert "case 0" in res.output and "operating.speed_rpm" in res.output
     assert not (tmp_path / "sweep.h5").exists()
+
+
+@pytest.mark.slow
+def test_a_dask_sweep_is_quiet_by_default_and_logs_with_verbose(tmp_path):
+    """`--scheduler local` printed 34 INFO lines of the scheduler and a connection traceback on the
+    terminal: without -v none of Dask's lines, with -v its INFO lines."""
+    pytest.importorskip("distributed")
+    from pathlib import Path
+
+    exe = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
+    deck = tmp_path / "linear.yaml"
+    deck.write_text(default_deck("spindle_linear").text)
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
+    runs = {}
+    for flag, out in (([], "quiet"), (["-v"], "verbose")):
+        runs[out] = subprocess.run([str(exe), *flag, "sweep", str(deck), "--analysis", "modal", "--set",
+                                    "operating.speed_rpm=0:2000:2", "--scheduler", "local", "--workers", "1",
+                                    "-o", str(tmp_path / out), "-q"], env=env, capture_output=True, text=True,
+                                   timeout=300)
+    quiet, verbose = runs["quiet"], runs["verbose"]
+    assert quiet.returncode == 0 and verbose.returncode == 0, quiet.stderr + verbose.stderr
+    assert "distributed" not in quiet.stderr and "Traceback" not in quiet.stderr, quiet.stderr
+    assert "INFO distributed" in verbose.stderr

@@ -197,3 +197,27 @@ def test_case_files_respect_the_umask_and_scalars_carry_their_units(tmp_path, um
                 assert unit and unit != "see the case file", n
         assert s["sweep/scalars/static.attr.stiffness_node"].attrs["units"] == "1"  # a node number
         assert s["sweep/scalars/static.attr.speed_rpm"].attrs["units"] == "rpm"
+
+
+def test_ctrl_c_after_every_case_finished_still_writes_the_summary_and_exits_130(tmp_path, monkeypatch):
+    """A Ctrl-C while the summary of finished cases is written waits for it: sweep.h5 (complete: every
+    case is done) and the summary plots are written, then the command stops with 130."""
+    import spindlesim.sweep.report as report
+
+    deck = tmp_path / "linear.yaml"
+    deck.write_text(default_deck("spindle_linear").text)
+    real = report.write_summary
+
+    def interrupted_summary(*args, **kwargs):
+        os.kill(os.getpid(), signal.SIGINT)  # the terminal's Ctrl-C, while the summary is being written
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(report, "write_summary", interrupted_summary)
+    out = tmp_path / "sweep"
+    res = CliRunner().invoke(main, ["sweep", str(deck), "--analysis", "modal", "--workers", "1",
+                                    "--set", "operating.speed_rpm=0:4000:3", "-o", str(out)])
+    assert res.exit_code == 130, res.output
+    assert "interrupted after the cases finished" in res.output
+    with h5py.File(out / "sweep.h5") as f:
+        assert bool(f.attrs["complete"])
+    assert (out / "sweep_scalars.png").exists()

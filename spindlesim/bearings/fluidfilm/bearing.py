@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..base import RADIAL, BearingBase
+from ..base import RADIAL, BearingBase, SpeedRequiredError
 from .film_model import FilmForceModel
 from .geometry import BearingGeometry, fixed_feed_geometry
 from .reynolds import DEFAULT_AXIAL, DEFAULT_CIRCUMFERENTIAL, ReynoldsSolver
@@ -113,7 +113,7 @@ class FluidFilmBearing(BearingBase):
     def analyze(self, speed: float, static_load: np.ndarray | None = None) -> ThermalResult:
         """Thermal equilibrium and operating point at ``speed`` [rad/s]."""
         if not speed > 0:
-            raise ValueError(f"bearing {self.name!r}: a hydrodynamic bearing needs a positive speed "
+            raise SpeedRequiredError(f"bearing {self.name!r}: a hydrodynamic bearing needs a positive speed "
                              f"(got {speed * 30 / math.pi:.6g} rpm)")
         load = self.load_vector(static_load)
         base = self if self.viscosity_Pa_s is None else dataclasses.replace(  # frozen or not: one cache entry
