@@ -71,14 +71,35 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
     deck is used) and -o OUTDIR (default out/<deck stem>).
     """
     ctx.meta["spindlesim.strict"] = strict  # read by commands.common.load_or_default
-    level = logging.WARNING - 10 * min(verbose, 2)
-    logging.basicConfig(level=level, format="%(levelname)s %(name)s: %(message)s")
-    if verbose < 2:  # the Dask scheduler's own INFO lines are not results
-        logging.getLogger("distributed").setLevel(logging.WARNING)
+    _configure_logging(verbose)
     os.environ.setdefault("MPLBACKEND", "Agg")
     # Rotor matrices are small (~100-500 DOF): threaded BLAS only adds overhead (docs/decisions.md).
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ.setdefault(var, "1")
+
+
+class _Formatter(logging.Formatter):
+    """``warning: message`` for the user; the logger's name only in debug output (-vv)."""
+
+    def format(self, record: logging.LogRecord) -> str:
+        text = super().format(record)
+        if record.levelno <= logging.DEBUG:
+            return f"debug {record.name}: {text}"
+        return f"{record.levelname.lower()}: {text}"
+
+
+def _configure_logging(verbose: int) -> None:
+    """Warnings by default; -v adds spindlesim's info lines, -vv its debug lines.  Other libraries
+    (matplotlib, h5py, numba, Dask) stay at warnings: their chatter is not the user's business."""
+    root = logging.getLogger()
+    if not root.handlers:  # as logging.basicConfig: a host that configured logging (a test runner) keeps its own
+        handler = logging.StreamHandler()
+        handler.setFormatter(_Formatter("%(message)s"))
+        root.addHandler(handler)
+        root.setLevel(logging.WARNING)
+    logging.getLogger("spindlesim").setLevel(logging.WARNING - 10 * min(verbose, 2))
+    if verbose:  # the sweep's Dask cluster follows -v (sweep/execution.py reads this)
+        logging.getLogger("distributed").setLevel(logging.INFO if verbose == 1 else logging.DEBUG)
 
 
 EXIT_INTERRUPTED = 130  # spindlesim.runs.status.EXIT_INTERRUPTED, not imported here: that loads the deck layer

@@ -136,8 +136,8 @@ def _quiet_dask() -> None:
     command's verbosity: none by default, its INFO lines with -v, DEBUG with -vv.  Importing distributed
     sets its loggers' levels from its configuration, so this runs after the import.  A case that fails
     is reported by the sweep itself, whatever Dask logs."""
-    root = logging.getLogger().getEffectiveLevel()
-    level = logging.CRITICAL if root > logging.INFO else root
+    asked = logging.getLogger("spindlesim").getEffectiveLevel()  # -v: INFO, -vv: DEBUG (spindlesim/cli.py)
+    level = logging.CRITICAL if asked > logging.INFO else asked
     for name in ("distributed", "tornado", "bokeh"):
         logging.getLogger(name).setLevel(level)
 

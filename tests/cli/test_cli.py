@@ -138,3 +138,25 @@ def test_unbalance_sweep_on_every_rotor_deck(deck, tmp_path):
     with h5py.File(tmp_path / "unbalance.h5") as f:
         assert f.attrs["complete"]
         assert np.all(np.isfinite(f["unbalance/response_m"][()].view(float)))
+
+
+def test_log_lines_read_as_warnings_and_vv_shows_only_spindlesim_debug(tmp_path):
+    """Issue 23: warnings print as "warning: ..." without logger names; -vv shows spindlesim's debug lines,
+    not matplotlib's, h5py's or numba's."""
+    import os
+    from pathlib import Path
+
+    exe = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
+    warn = subprocess.run([str(exe), "campbell", "--speeds", "0:3000:3", "-o", str(tmp_path / "w"), "-q"],
+                          env=env, capture_output=True, text=True, timeout=300)
+    assert warn.returncode == 0, warn.stderr
+    assert "warning: Campbell diagram: 0 rpm left out" in warn.stderr
+    assert "WARNING" not in warn.stderr and "spindlesim.analysis" not in warn.stderr
+    debug = subprocess.run([str(exe), "-vv", "modal", "-o", str(tmp_path / "d"), "-q"], env=env,
+                           capture_output=True, text=True, timeout=300)
+    assert debug.returncode == 0, debug.stderr
+    lines = [ln for ln in debug.stderr.splitlines() if ln.strip()]
+    assert any(ln.startswith("debug spindlesim.") for ln in lines)
+    others = [ln for ln in lines if ln.startswith("debug ") and not ln.startswith("debug spindlesim.")]
+    assert not others, others[:5]
