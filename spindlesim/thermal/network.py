@@ -327,10 +327,10 @@ def _balance(net: Network, T: np.ndarray, q: np.ndarray, G: np.ndarray, W: np.nd
     ia, ib = c["ia"], c["ib"]
     for k in np.flatnonzero(fixed[ia] ^ fixed[ib]):
         b, f = (ia[k], ib[k]) if fixed[ia[k]] else (ib[k], ia[k])
-        removed[net.names[b]] += G[k] * (T[f] - T[b])
+        removed[net.names[b]] += float(G[k] * (T[f] - T[b]))
     iu, idn = c["iu"], c["id"]
     for k in range(iu.size):
-        removed[c["inlet_of"][k]] += W[k] * (T[idn[k]] - T[iu[k]])
+        removed[c["inlet_of"][k]] += float(W[k] * (T[idn[k]] - T[iu[k]]))
     generated = float(q.sum())
     return EnergyBalance(generated, removed, generated - float(sum(removed.values())))
 
