@@ -21,7 +21,7 @@ RANK = {
     "__init__": 0, "fields": 0, "lazy": 0,
     "contact": 1,
     "bearings": 2, "chatter": 2,
-    "deck": 3, "model": 3,
+    "deck": 3, "model": 3, "thermal": 3,
     "fe": 4,
     "analysis": 5,
     "output": 6,
