@@ -11,9 +11,9 @@ With ``refine`` (what ``spindlesim unbalance`` does) no resonance falls between 
 1. the modes at every speed of the user's grid, tracked by MAC as in a Campbell diagram (the
    reduced model when it passes its check), up to 1.25 times the highest 1x frequency;
 2. each sign change of g_k(N) = f_k(N) - N/60 (f_k the damped frequency) is located by a bracketed
-   secant search (Illinois) on the full model, the static state at each trial speed warm-started and
-   the mode picked by MAC with the tracked one, until g is below 1e-3 of the mode's half-power
-   half-width zeta f_k;
+   secant search (Illinois) on the full model (the bracket's ends re-evaluated on it), the static state
+   at each trial speed warm-started and the mode picked by MAC with the tracked one, until g is below
+   1e-3 of the mode's half-power half-width zeta f_k;
 3. around each crossing N_c the speeds N_c + w BAND_STEPS are added (:mod:`.resonance`), with
    w = zeta f_k / |d f_k/dN - 1/60| the half-width of the resonance in speed (zeta N_c when f_k
    does not change with speed);
@@ -71,17 +71,19 @@ def solve_unbalance(rotor: Rotor, speeds_rpm: np.ndarray, node: int, unbalance_k
         if stopped:
             raise EquilibriumError(f"unbalance response {stopped}")
         speeds = speeds[first:first + len(states)]
-        found = _crossings(rotor, shaft, speeds, states, operating)
+        found, at_crossings = _crossings(rotor, shaft, speeds, states, operating)
         speeds_all, added = refine_grid(speeds, found.speed_rpm, _half_widths(found), ())
         keep = ~(added & np.isin(speeds_all, found.speed_rpm[np.abs(found.damping_ratio) < UNDAMPED_ZETA]))
         speeds_all, added = speeds_all[keep], added[keep]  # an undamped crossing: its band, not the singular centre
         by_speed = dict(zip(speeds.tolist(), states))
+        known = np.concatenate([speeds, found.speed_rpm])
+        starts = list(states) + at_crossings  # an added speed starts from the nearest state known
         all_states = []
         for s in speeds_all:
             if s in by_speed:
                 all_states.append(by_speed[s])
             else:
-                near = states[int(np.argmin(np.abs(speeds - s)))]
+                near = starts[int(np.argmin(np.abs(known - s)))]
                 all_states.append(operating_state(rotor, s, shaft, start=near))
         speeds = speeds_all
         q = [response(st) for st in all_states]
@@ -105,9 +107,10 @@ def _half_widths(c) -> np.ndarray:
 
 
 def _crossings(rotor: Rotor, shaft, speeds: np.ndarray, states, operating):
-    """The 1x crossings of the modes tracked over ``speeds`` (module note, steps 1 and 2)."""
+    """(the 1x crossings of the modes tracked over ``speeds``, the static state at each) (module note,
+    steps 1 and 2)."""
     if len(speeds) < 2:
-        return crossings_from([], operating)
+        return crossings_from([], operating), []
     top = modal_from_matrices(system_matrices(rotor, state=states[-1]), rotor.dofs, rotor.node_z_m,
                               2 * rotor.dofs.size, speeds[-1])
     low = modal_from_matrices(system_matrices(rotor, state=states[0]), rotor.dofs, rotor.node_z_m,
@@ -122,15 +125,15 @@ def _crossings(rotor: Rotor, shaft, speeds: np.ndarray, states, operating):
         k = int(rough.mode[j])
         i = int(np.searchsorted(speeds, rough.speed_rpm[j], side="right") - 1)
         i = min(max(i, 0), len(speeds) - 2)
-        sc, fc, zc, wc = _locate(rotor, shaft, speeds, states, tr, i, k)
-        rows.append((sc, 1.0, k, fc, zc, wc, float(rough.slope_hz_per_rpm[j])))
+        sc, fc, zc, wc, st = _locate(rotor, shaft, speeds, states, tr, i, k)
+        rows.append((sc, 1.0, k, fc, zc, wc, float(rough.slope_hz_per_rpm[j]), st))
     rows.sort(key=lambda r: r[0])
-    return crossings_from(rows, operating)
+    return crossings_from([r[:7] for r in rows], operating), [r[7] for r in rows]
 
 
 def _locate(rotor: Rotor, shaft, speeds, states, tr, i: int, k: int):
-    """(speed, frequency, damping ratio, whirl) where tracked mode ``k`` crosses the 1x line between
-    speeds i and i + 1: Illinois (regula falsi with halving) on the full model."""
+    """(speed, frequency, damping ratio, whirl, static state) where tracked mode ``k`` crosses the 1x
+    line between speeds i and i + 1: Illinois (regula falsi with halving) on the full model."""
     ref = tr.shapes[i, k] if np.all(np.isfinite(tr.shapes[i, k])) else tr.shapes[i + 1, k]
     n_modes = tr.frequency_hz.shape[1] + 4
     near = [states[i]]
@@ -145,10 +148,11 @@ def _locate(rotor: Rotor, shaft, speeds, states, tr, i: int, k: int):
         c = int(np.argmax(mac(ref[None, :], shapes)[0] - 0.5 * np.minimum(rel, 1.0)))
         return m.frequency_hz[c] - s / 60.0, (m.frequency_hz[c], m.damping_ratio[c], m.whirl[c])
 
+    # the bracket on the full model (the tracked frequencies may come from the reduced one, whose error can
+    # exceed a lightly damped mode's half-width); without a sign change there, plain secant steps
     a, b = speeds[i], speeds[i + 1]
-    ga = tr.frequency_hz[i, k] - a / 60.0
-    gb = tr.frequency_hz[i + 1, k] - b / 60.0
-    info = (tr.frequency_hz[i, k], tr.damping_ratio[i, k], tr.whirl[i, k])
+    (ga, info), (gb, _) = g(a), g(b)
+    bracketed = ga * gb <= 0
     c = a
     for _ in range(40):
         if gb == ga:
@@ -158,14 +162,14 @@ def _locate(rotor: Rotor, shaft, speeds, states, tr, i: int, k: int):
         tol = CROSSING_TOL * max(abs(info[1]), MIN_HALF_WIDTH) * info[0]
         if abs(gc) <= tol or abs(b - a) <= 1e-12 * abs(c):
             break
-        if gc * gb < 0:
+        if not bracketed or gc * gb < 0:
             a, ga = b, gb
         else:
             ga *= 0.5
         b, gb = c, gc
     else:
         log.warning("1x crossing of mode %d near %.6g rpm: located to |f - N/60| = %.3g Hz only", k + 1, c, gc)
-    return float(c), float(info[0]), float(info[1]), str(info[2])
+    return float(c), float(info[0]), float(info[1]), str(info[2]), near[0]
 
 
 def _peaks(c, speeds: np.ndarray, amp: np.ndarray) -> UnbalanceResonances:

@@ -146,8 +146,9 @@ def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
     fig.legend(*ax1.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1 - 1.15 / w, ax1.get_position().y1),
                fontsize=7, frameon=False)
     crit = ", ".join(f"{c:.0f}" for c in r.critical_speeds_rpm)
-    ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (*)" if len(r.critical_speeds_rpm)
-                                        else ": no critical speed in the range"), fontsize=11)
+    ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (1x, AF >= 2.5)"
+                                        if len(r.critical_speeds_rpm) else ": no critical speed in the range"),
+                  fontsize=11)
     ax1.grid(True, alpha=0.3)
     ax2.axhline(0, color="k", lw=0.8)
     ax2.set_ylabel("log decrement [-]")
