@@ -127,12 +127,6 @@ class Crossings:
         sm = self.separation_margin
         return ~self.critical | (np.isfinite(sm) & (sm >= self.required_margin - 1e-12))
 
-    def select(self, keep: np.ndarray) -> "Crossings":
-        keep = np.asarray(keep, bool)
-        arrays = {f.name: getattr(self, f.name)[keep] for f in dataclasses.fields(self)
-                  if isinstance(getattr(self, f.name), np.ndarray)}
-        return dataclasses.replace(self, whirl=tuple(w for w, k in zip(self.whirl, keep) if k), **arrays)
-
 
 def find_crossings(speeds_rpm, freq_hz, zeta, whirl, orders=(1.0,), operating=None) -> Crossings:
     """Sign changes of f_k(N) - n N / 60 between neighbouring speeds for every tracked mode (columns

@@ -156,3 +156,26 @@ def test_frf_reports_the_static_compliance_not_its_first_frequency(tmp_path):
     assert "static compliance (0 Hz, K^-1) 2.5" in res.output and "static-end" not in res.output
     (_, _, s), = summarize([tmp_path / "o" / "frf.h5"])
     assert s["static_compliance_m_N"] == pytest.approx(static, rel=1e-9)
+
+
+def test_deck_operating_range_sets_the_separation_margins(tmp_path):
+    """operating.min_operating_rpm / max_continuous_rpm are the range API 684 measures from; min > max is a
+    deck error (exit 2)."""
+    zeta = 0.05
+    campbell = "campbell:\n  speeds_rpm: {start: 0, stop: 1500, count: 16}\n  modes: 4\n"
+    text = _deck(tmp_path, _body(zeta), 700.0, campbell).read_text()
+    ranged = tmp_path / "ranged.yaml"
+    ranged.write_text(text.replace("speed_rpm: 700.0", "speed_rpm: 700.0\n  min_operating_rpm: 600\n"
+                                                       "  max_continuous_rpm: 800"))
+    res = CliRunner().invoke(main, ["campbell", str(ranged), "-o", str(tmp_path / "out")])
+    assert res.exit_code == 0, res.output
+    with h5py.File(tmp_path / "out" / "campbell.h5") as f:
+        g = f["campbell/crossings"]
+        assert (g.attrs["min_operating_rpm"], g.attrs["max_continuous_rpm"]) == (600.0, 800.0)
+        nc = g["speed_rpm"][:]
+        one = g["order"][:] == 1.0
+        np.testing.assert_allclose(g["separation_margin"][one], (nc[one] - 800.0) / 800.0)
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(ranged.read_text().replace("min_operating_rpm: 600", "min_operating_rpm: 900"))
+    res = CliRunner().invoke(main, ["campbell", str(bad), "-o", str(tmp_path / "bad")])
+    assert res.exit_code == 2 and "min_operating_rpm exceeds max_continuous_rpm" in res.output
