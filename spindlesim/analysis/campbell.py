@@ -4,9 +4,11 @@ Mode tracking: the modal assurance criterion between complex mode shapes,
 MAC(a, b) = |a^H b|^2 / ((a^H a)(b^H b)), weighted by frequency proximity, is
 maximised over assignments (Hungarian algorithm, scipy.optimize.linear_sum_assignment, see
 :func:`assign`).
-A critical speed is where the 1x line f = N/60 crosses a forward-whirl mode whose
-amplification factor AF = 1/(2 zeta) is at least 2.5 (API 684: a crossing with
-AF < 2.5 is critically damped and not a critical speed).
+Crossings (:mod:`.resonance`): every tracked mode (forward, backward, mixed, axial) against every
+excitation order asked for (1x, 2x, a cutter's tooth-passing order), each with its API 684
+amplification factor AF = 1/(2 zeta) and separation margin from the operating range.  A critical
+speed is a 1x crossing with AF >= 2.5 of a mode that is not backward lateral (a crossing with AF < 2.5
+is critically damped).
 """
 
 from __future__ import annotations
@@ -25,6 +27,7 @@ from .modal import modal_from_matrices
 from .operating import RPM, OperatingState, operating_state, system_matrices
 from .prefetch import ModalPrefetch
 from .reduced import checked_basis, first_basis
+from .resonance import Crossings, find_crossings
 from .results import CampbellResult
 
 log = logging.getLogger(__name__)
@@ -61,20 +64,23 @@ def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
                    progress: Callable[[int, int], None] | None = None,
-                   frozen_rpm: float | None = None, exact: bool = False) -> CampbellResult:
+                   frozen_rpm: float | None = None, exact: bool = False, orders=(1.0,),
+                   operating: tuple[float, float] | None = None) -> CampbellResult:
     """Tracked modes over ``speeds_rpm``; the bearings are linearised at the static state of every
     speed, or with ``frozen_rpm`` held at their coefficients of that speed (gyroscopics still vary).
     The modes come from the reduced model (``reduced``), or with ``exact`` from the full state-space
-    QR solution at every speed."""
+    QR solution at every speed.  The crossings of the excitation ``orders`` with the tracked modes are
+    judged against the ``operating`` range (minimum operating, maximum continuous speed [rpm])."""
     shaft = assemble_shaft(rotor)
     guess = _Guess(rotor, shaft, n_modes + max(4, n_modes // 2))
     try:
-        return _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess)
+        return _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess, orders, operating)
     finally:
         guess.cancel()  # a failure or Ctrl-C before the prefetched modes were used: stop their thread
 
 
-def _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess) -> CampbellResult:
+def _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess, orders,
+              operating) -> CampbellResult:
     speeds = np.asarray(speeds_rpm, float)
     total = 2 * len(speeds) if frozen_rpm is None else len(speeds)
     done = [0]
@@ -93,18 +99,46 @@ def _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, gu
     else:  # the bearings' state at frozen_rpm, the shaft (gyroscopics) at every speed
         held = operating_state(rotor, frozen_rpm, shaft)
         states = [dataclasses.replace(held, speed_rad_s=float(s) * RPM) for s in speeds]
-    n_track = n_modes
-    extra = max(4, n_modes // 2)  # spare modes so a mode leaving the window can be replaced (as in _Guess)
-    freq = np.full((len(speeds), n_track), np.nan)
+    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + max(4, n_modes // 2), states, exact,
+                                    n_check=n_modes, guess=guess)
+    tracked = track_modes(modal, len(speeds), n_modes, tick)
+    freq, zeta, logdec, whirl = tracked.frequency_hz, tracked.damping_ratio, tracked.log_dec, tracked.whirl
+    crossings = find_crossings(speeds, freq, zeta, whirl, orders, operating)
+    crit = critical_speed_crossings(crossings)
+    return CampbellResult(speed_rpm=speeds, frequency_hz=freq, log_dec=logdec, damping_ratio=zeta,
+                          whirl=whirl.astype(str), critical_speeds_rpm=crossings.speed_rpm[crit],
+                          critical_modes=crossings.mode[crit], model=model, incomplete_reason=stopped,
+                          crossings=crossings)
+
+
+@dataclasses.dataclass(frozen=True)
+class TrackedModes:
+    """Modes followed over speeds: [speed, mode] arrays (NaN / "" where a mode is not tracked), and with
+    ``shapes`` the tracked mode shapes [speed, mode, entries] (NaN where not tracked)."""
+
+    frequency_hz: np.ndarray
+    damping_ratio: np.ndarray
+    log_dec: np.ndarray
+    whirl: np.ndarray
+    shapes: np.ndarray | None = None
+
+
+def track_modes(modal, n_speeds: int, n_track: int, tick: Callable[[], None] | None = None,
+                keep_shapes: bool = False) -> TrackedModes:
+    """Follow ``n_track`` modes through the modal results of consecutive speeds (an iterable of
+    ModalResult) by MAC with a frequency-jump penalty, the assignment by :func:`assign`; spare modes
+    (more in each result than tracked) replace a mode that leaves the window."""
+    freq = np.full((n_speeds, n_track), np.nan)
     zeta = np.full_like(freq, np.nan)
     logdec = np.full_like(freq, np.nan)
     whirl = np.full(freq.shape, "", dtype=object)
+    kept = None
     prev_shapes = None
     prev_freq = None
-    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + extra, states, exact, n_check=n_modes,
-                                    guess=guess)
-    for i, (s, m) in enumerate(zip(speeds, modal)):
+    for i, m in enumerate(modal):
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
+        if kept is None and keep_shapes:
+            kept = np.full((n_speeds, n_track, shapes.shape[1]), np.nan, complex)
         if prev_shapes is None:
             take = np.arange(min(n_track, len(m.frequency_hz)))
             cols = take
@@ -123,14 +157,21 @@ def _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, gu
             zeta[i, k] = m.damping_ratio[c]
             logdec[i, k] = m.log_dec[c]
             whirl[i, k] = m.whirl[c]
+            if kept is not None:
+                kept[i, k] = shapes[c]
         valid = cols >= 0
         prev_shapes = shapes[cols[valid]] if prev_shapes is not None else shapes[: len(take)]
         prev_freq = m.frequency_hz[cols[valid]] if prev_freq is not None else m.frequency_hz[: len(take)]
-        tick()
-    crit, crit_mode = critical_speeds(speeds, freq, whirl, zeta)
-    return CampbellResult(speed_rpm=speeds, frequency_hz=freq, log_dec=logdec, damping_ratio=zeta,
-                          whirl=whirl.astype(str), critical_speeds_rpm=crit, critical_modes=crit_mode, model=model,
-                          incomplete_reason=stopped)
+        if tick is not None:
+            tick()
+    return TrackedModes(freq, zeta, logdec, whirl, kept)
+
+
+def critical_speed_crossings(c: Crossings) -> np.ndarray:
+    """Which crossings are critical speeds of the 1x (unbalance) line: AF >= 2.5 (API 684) and not a
+    backward lateral mode (an unbalance drives forward whirl; a backward mode only through support
+    anisotropy, and is listed with the other crossings)."""
+    return (c.order == 1.0) & c.critical & np.array([w != "backward" for w in c.whirl], bool)
 
 
 def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], None] | None = None,
@@ -163,9 +204,6 @@ def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], No
         if tick is not None:
             tick()
     return states, "", first
-
-
-API684_MIN_AF = 2.5
 
 
 def usable_cores() -> int:
@@ -221,30 +259,6 @@ def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, stat
                 yield from ex.map(one, range(len(speeds)))
 
     return model, results()
-
-
-def critical_speeds(speeds_rpm: np.ndarray, freq_hz: np.ndarray, whirl: np.ndarray,
-                    damping_ratio: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Speeds where the 1x excitation line crosses a forward mode with AF = 1/(2 zeta) >= 2.5
-    (linear interpolation between the speeds of the sweep)."""
-    out, modes = [], []
-    g = freq_hz - speeds_rpm[:, None] / 60.0
-    for k in range(freq_hz.shape[1]):
-        for i in range(len(speeds_rpm) - 1):
-            a, b = g[i, k], g[i + 1, k]
-            if not (np.isfinite(a) and np.isfinite(b)) or a * b > 0 or a == b:
-                continue
-            if "forward" not in (whirl[i, k], whirl[i + 1, k]):
-                continue
-            t = a / (a - b)
-            if damping_ratio is not None:
-                z = damping_ratio[i, k] + t * (damping_ratio[i + 1, k] - damping_ratio[i, k])
-                if z > 0 and 1.0 / (2.0 * z) < API684_MIN_AF:
-                    continue
-            out.append(speeds_rpm[i] + t * (speeds_rpm[i + 1] - speeds_rpm[i]))
-            modes.append(k)
-    order = np.argsort(out)
-    return np.asarray(out, float)[order], np.asarray(modes, int)[order]
 
 
 class _Guess:

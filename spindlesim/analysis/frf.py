@@ -1,4 +1,4 @@
-"""Frequency response H(w) = (-w^2 M + j w C + K)^-1 (seed 003 eq. 23) and unbalance response.
+"""Frequency response H(w) = (-w^2 M + j w C + K)^-1 (seed 003 eq. 23); unbalance response: .unbalance.
 
 The receptance is evaluated through the complete state-space eigendecomposition
 A = V diag(lambda) V^-1 of p' = A p + B f:
@@ -17,11 +17,11 @@ import logging
 import numpy as np
 import scipy.linalg as sla
 
-from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
-from .modal import state_matrix
-from .operating import system_matrices
-from .results import FrfResult, UnbalanceResult
+from .modal import modal_from_matrices, state_matrix
+from .operating import SingularRotorError, _solve, system_matrices
+from .resonance import frequency_refinement
+from .results import FrfResult, ModesInRange
 
 log = logging.getLogger(__name__)
 _COND_LIMIT = 1e10
@@ -47,39 +47,45 @@ def receptance(sysm, out_index: int, in_index: int, omega: np.ndarray) -> np.nda
 
 
 def solve_frf(rotor: Rotor, frequencies_hz: np.ndarray, input_node: int, input_dof: str,
-              output_node: int, output_dof: str, speed_rpm: float | None = None) -> FrfResult:
-    """Receptance between (1-based) input and output node/DOF at the rotor speed."""
+              output_node: int, output_dof: str, speed_rpm: float | None = None, refine: bool = False) -> FrfResult:
+    """Receptance between (1-based) input and output node/DOF at the rotor speed, and the static
+    compliance K^-1 there.  With ``refine`` the frequency grid gets points around every mode whose
+    half-power band reaches into it (:func:`.resonance.frequency_refinement`), so that no peak falls
+    between two points; ``added`` marks them."""
     speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
     sysm = system_matrices(rotor, speed)
     f = np.asarray(frequencies_hz, float)
-    h = receptance(sysm, rotor.dofs.index(output_node - 1, output_dof),
-                   rotor.dofs.index(input_node - 1, input_dof), 2 * np.pi * f)
+    i_out, i_in = rotor.dofs.index(output_node - 1, output_dof), rotor.dofs.index(input_node - 1, input_dof)
+    added = modes = None
+    if refine and f.size:
+        modes = modes_in_range(modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, sysm.size, speed),
+                               float(f.min()), float(f.max()))
+        f, added = frequency_refinement(f, modes.undamped_frequency_hz, modes.damping_ratio)
+        log.info("FRF grid: %d points added around %d modes in range", int(added.sum()), len(modes.frequency_hz))
+    h = receptance(sysm, i_out, i_in, 2 * np.pi * f)
     return FrfResult(frequency_hz=f, receptance_m_N=h, input_node=input_node, input_dof=input_dof,
-                     output_node=output_node, output_dof=output_dof, speed_rpm=speed)
+                     output_node=output_node, output_dof=output_dof, speed_rpm=speed, added=added, modes=modes,
+                     static_compliance_m_N=static_compliance(sysm.K, i_out, i_in))
 
 
-def solve_unbalance(rotor: Rotor, speeds_rpm: np.ndarray, node: int, unbalance_kg_m: float,
-                    phase_deg: float, output_node: int, output_dof: str) -> UnbalanceResult:
-    """Steady synchronous response to a rotating unbalance m e at (1-based) ``node``.
+def modes_in_range(m, lo_hz: float, hi_hz: float, reach: float = 3.0) -> ModesInRange:
+    """The modes of ModalResult ``m`` whose band f_n (1 +- ``reach`` zeta) overlaps [lo, hi] Hz."""
+    fn, z = m.undamped_frequency_hz, np.abs(m.damping_ratio)
+    sel = (fn * (1 + reach * z) >= lo_hz) & (fn * (1 - reach * z) <= hi_hz)
+    return ModesInRange(frequency_hz=m.frequency_hz[sel], undamped_frequency_hz=fn[sel],
+                        damping_ratio=m.damping_ratio[sel], whirl=tuple(w for w, k in zip(m.whirl, sel) if k))
 
-    The unbalance force m e W^2 (cos(W t + a), sin(W t + a)) is the real part of
-    F e^{j W t} with F_x = m e W^2 e^{j a}, F_y = -j m e W^2 e^{j a}; at every
-    speed the matrices (gyroscopics, speed-dependent bearings) are rebuilt and
-    (-W^2 M + j W C(W) + K(W)) q = F is solved.
-    """
-    shaft = assemble_shaft(rotor)
-    speeds = np.asarray(speeds_rpm, float)
-    resp = np.empty((len(speeds), rotor.n_nodes, 2), complex)
-    ix, iy = rotor.dofs.index(node - 1, "x"), rotor.dofs.index(node - 1, "y")
-    for k, s in enumerate(speeds):
-        W = s * np.pi / 30
-        sysm = system_matrices(rotor, s, shaft=shaft)
-        F = np.zeros(sysm.size, complex)
-        amp = unbalance_kg_m * W**2 * np.exp(1j * np.deg2rad(phase_deg))
-        F[ix], F[iy] = amp, -1j * amp
-        q = sla.solve(-(W**2) * sysm.M + 1j * W * sysm.C + sysm.K, F, check_finite=False)
-        resp[k, :, 0] = q[rotor.dofs.component("x")]
-        resp[k, :, 1] = q[rotor.dofs.component("y")]
-    return UnbalanceResult(speed_rpm=speeds, response_m=resp, unbalance_kg_m=unbalance_kg_m,
-                           unbalance_node=node, output_node=output_node, output_dof=output_dof,
-                           node_z_m=rotor.node_z_m)
+
+def static_compliance(K: np.ndarray, out_index: int, in_index: int) -> float | None:
+    """K^-1 [out, in] [m/N]: the receptance at 0 Hz (damping and gyroscopics drop out); None where the
+    stiffness does not hold the input direction (a rigid-body motion)."""
+    e = np.zeros(K.shape[0])
+    e[in_index] = 1.0
+    try:
+        c = float(_solve(K, e, "the rotor at the FRF's operating point")[out_index])
+    except SingularRotorError:
+        return None
+    return c if np.isfinite(c) else None
+
+
+from .unbalance import solve_unbalance  # noqa: E402,F401  (its home was this module)

@@ -10,7 +10,8 @@ roots below 1 mHz (rigid-body) are reported apart from the mode list.
 Whirl direction at a node from the complex (x, y) amplitudes: the orbit is the
 sum of a forward circle of radius |x + i y| / 2 and a backward one of radius
 |x - i y| / 2 (spin about +z); forward when the first is larger.  A mode whose lateral
-translations are below 1 % of its axial one (rotors with the axial DOF) is "axial".
+translations are below a tenth of its axial one (rotors with the axial DOF) is "axial"; its shape
+keeps the axial component z.
 """
 
 from __future__ import annotations
@@ -52,9 +53,15 @@ def whirl_of(shapes_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[list[str],
     return names, share
 
 
+def shape_dofs(dofs) -> tuple[str, ...]:
+    """The entries of a mode shape per node: x, y, theta_x, theta_y, and z last where the rotor has the
+    axial DOF (so the first four mean the same for every rotor)."""
+    return DOFS_4 + (("z",) if "z" in dofs.names else ())
+
+
 def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_modes: int,
                         speed_rpm: float, expand: np.ndarray | None = None) -> ModalResult:
-    """Modes of assembled matrices; ``dofs`` is the rotor's DofMap (mode shapes keep x, y, theta_x, theta_y).
+    """Modes of assembled matrices; ``dofs`` is the rotor's DofMap (mode shapes: :func:`shape_dofs`).
     ``expand`` maps the matrices' coordinates to the rotor's DOFs (a reduced model's basis T)."""
     n_nodes = dofs.n_nodes
     A = state_matrix(sysm)
@@ -70,13 +77,14 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     lam_m = lam[order]
     q = vec[:n, order] if expand is None else expand @ vec[:n, order]
     per_node = q.T.reshape(len(order), n_nodes, -1)
-    shapes = np.zeros((len(order), n_nodes, 4), complex)  # (x, y, theta_x, theta_y); absent DOFs stay 0
-    for k, d in enumerate(DOFS_4):
+    names = shape_dofs(dofs)
+    shapes = np.zeros((len(order), n_nodes, len(names)), complex)  # absent DOFs (a rigid journal's) stay 0
+    for k, d in enumerate(names):
         if d in dofs.names:
             shapes[:, :, k] = per_node[:, :, dofs.names.index(d)]
     # normalise: the largest translation (x, y, or z where the rotor has it) becomes 1 + 0j
-    axial = per_node[:, :, dofs.names.index("z")] if "z" in dofs.names else np.zeros((len(order), n_nodes))
-    trans = np.concatenate([shapes[:, :, :2].reshape(len(order), -1), axial], axis=1)
+    trans = np.concatenate([shapes[:, :, :2].reshape(len(order), -1), shapes[:, :, 4:].reshape(len(order), -1)],
+                           axis=1)
     ref = trans[np.arange(len(order)), np.argmax(np.abs(trans), axis=1)]
     shapes = shapes / ref[:, None, None]
     lateral = np.max(np.abs(shapes[:, :, :2]).reshape(len(order), -1), axis=1) if len(order) else np.zeros(0)

@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .resonance import Crossings
+
 
 @dataclass(frozen=True)
 class StaticResult:
@@ -37,7 +39,9 @@ class ModalResult:
     log_dec: np.ndarray
     whirl: tuple[str, ...]  # forward / backward / mixed
     forward_fraction: np.ndarray  # share of nodes whirling forward, by mode
-    mode_shape: np.ndarray  # complex [mode, node, 4] (x, y, theta_x, theta_y), largest translation = 1
+    # complex [mode, node, dof]: (x, y, theta_x, theta_y) and, where the rotor has the axial DOF, z last;
+    # largest translation (x, y or z) = 1
+    mode_shape: np.ndarray
     node_z_m: np.ndarray
     overdamped_roots: np.ndarray  # complex roots with zeta >= 0.999 (incl. real), 1/s
     rigid_body_roots: np.ndarray  # |lambda| below the rigid-body threshold
@@ -51,10 +55,11 @@ class CampbellResult:
     log_dec: np.ndarray
     damping_ratio: np.ndarray
     whirl: np.ndarray  # [speed, mode] strings
-    critical_speeds_rpm: np.ndarray  # 1x line crossing a forward mode
+    critical_speeds_rpm: np.ndarray  # 1x crossings with AF >= 2.5 of modes other than backward lateral
     critical_modes: np.ndarray  # tracked mode index of each critical speed
     model: str = "full state space"  # or "reduced: m of n coordinates" (analysis/reduced.py)
     incomplete_reason: str = ""  # set when a speed's static state failed: the speeds before it only
+    crossings: Crossings | None = None  # every excitation order against every tracked mode, API 684 judged
 
 
 @dataclass(frozen=True)
@@ -66,6 +71,9 @@ class FrfResult:
     output_node: int
     output_dof: str
     speed_rpm: float
+    added: np.ndarray | None = None  # bool per frequency: added around a mode (False: the user's grid)
+    modes: "ModesInRange | None" = None  # the modes the grid was refined around
+    static_compliance_m_N: float | None = None  # K^-1 [output, input] (0 Hz); None where K does not hold it
 
     @property
     def dynamic_stiffness_N_m(self) -> np.ndarray:
@@ -81,3 +89,27 @@ class UnbalanceResult:
     output_node: int  # 1-based
     output_dof: str
     node_z_m: np.ndarray
+    added: np.ndarray | None = None  # bool per speed: added around a resonance (False: the user's grid)
+    resonances: "UnbalanceResonances | None" = None  # the 1x crossings the grid was refined around
+
+
+@dataclass(frozen=True)
+class ModesInRange:
+    """Damped modes (ascending) whose half-power band reaches into a requested frequency range."""
+
+    frequency_hz: np.ndarray  # damped
+    undamped_frequency_hz: np.ndarray
+    damping_ratio: np.ndarray
+    whirl: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class UnbalanceResonances:
+    """1x crossings inside an unbalance sweep (speed found by a root search on f_k(N) - N/60) and the
+    response peak near each: its speed and amplitude at the output, and the API 684 amplification
+    factor N_peak / (N_2 - N_1) from its half-power speeds (NaN where they are not both in range)."""
+
+    crossings: Crossings
+    peak_speed_rpm: np.ndarray
+    peak_amplitude_m: np.ndarray  # 0-peak, |response| at the output DOF
+    half_power_af: np.ndarray

@@ -102,6 +102,25 @@ class Operating(DeckModel):
     speed_rpm: NonNegFloat
     gravity: bool = False
     g_m_s2: PositiveFloat = 9.80665
+    # the operating speed range for API 684 separation margins (default: speed_rpm alone)
+    min_operating_rpm: Optional[PositiveFloat] = None
+    max_continuous_rpm: Optional[PositiveFloat] = None
+
+    @model_validator(mode="after")
+    def _range(self) -> "Operating":
+        lo, hi = self.min_operating_rpm, self.max_continuous_rpm
+        if lo is not None and hi is not None and lo > hi:
+            raise ValueError("min_operating_rpm exceeds max_continuous_rpm")
+        return self
+
+    @property
+    def speed_range_rpm(self) -> tuple[float, float] | None:
+        """(minimum operating, maximum continuous speed) [rpm], each defaulting to speed_rpm; None when
+        neither is known (speed_rpm 0 and no range given)."""
+        lo = self.min_operating_rpm if self.min_operating_rpm is not None else self.speed_rpm
+        hi = self.max_continuous_rpm if self.max_continuous_rpm is not None else self.speed_rpm
+        lo, hi = (lo or hi), (hi or lo)
+        return (float(min(lo, hi)), float(max(lo, hi))) if lo and hi else None
 
 
 class PointLoad(DeckModel):

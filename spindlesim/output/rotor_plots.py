@@ -63,11 +63,13 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
         ax.plot(z, shape[:, 1].real, "s-", ms=3, color="tab:orange", label="y (real part)")
         X, Y = shape[:, 0], shape[:, 1]  # orbit semi-major axis: forward + backward circle radii
         ax.plot(z, 0.5 * (np.abs(X - 1j * Y) + np.abs(X + 1j * Y)), ":", color="0.45", label="orbit semi-major axis")
+        if shape.shape[1] > 4:  # the axial DOF (z, last)
+            ax.plot(z, shape[:, 4].real, "d-", ms=3, color="tab:green", label="z, axial (real part)")
         for name, zb in bearings:
             ax.axvline(zb * 1e3, color="0.55", lw=0.8, ls="--", label="bearing" if name == bearings[0][0] else None)
         ax.set_ylabel("amplitude [-]")
         ax.set_yticks([-1.0, 0.0, 1.0])  # normalised: the largest translation is 1 (three ticks keep 8 panels cheap)
-        what = r.whirl[k] if r.whirl[k] != "axial" else "axial (lateral part shown)"
+        what = r.whirl[k]
         ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.4f}, "
                      f"log dec {r.log_dec[k]:.3f}, {what}", fontsize=9, y=1.0)
         ax.grid(True, alpha=0.3)
@@ -86,8 +88,10 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
 
 
 def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
-    """Tracked modes (one colour per mode in both panels; marker = whirl), the 0.5x, 1x and 2x lines,
-    critical speeds marked where 1x crosses a forward mode, speeds with an unstable mode shaded."""
+    """Tracked modes (one colour per mode in both panels; marker = whirl), the 0.5x line and the
+    excitation orders of the crossings (1x, 2x, a cutter's tooth passing), every crossing marked
+    (a star where it is an API 684 critical speed, AF >= 2.5, labelled on the 1x line), speeds with an
+    unstable mode shaded."""
     fig = new_figure(10, 7.5, layout=None)
     ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
     s = r.speed_rpm
@@ -102,13 +106,27 @@ def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
                 ax1.plot(s[sel], r.frequency_hz[sel, k], m, ms=3.5, color=c, mfc="none" if w == "backward" else c,
                          ls="none")
         ax2.plot(s, r.log_dec[:, k], color=c, lw=1.2, label=f"mode {k + 1}")
-    for mult, ls in ((0.5, ":"), (1.0, "--"), (2.0, "-.")):
-        ax1.plot(s, mult * s / 60.0, color="k", ls=ls, lw=0.9, label=f"{mult:g}x")
+    orders = sorted({0.5, 1.0, 2.0} | set(r.crossings.orders if r.crossings is not None else ()))
+    styles = {0.5: ":", 1.0: "--", 2.0: "-."}
+    for mult in orders:
+        ax1.plot(s, mult * s / 60.0, color="k", ls=styles.get(mult, (0, (5, 2, 1, 2, 1, 2))), lw=0.9,
+                 label=f"{mult:g}x")
     for w, m in marker.items():
         if np.any(r.whirl == w):
             ax1.plot([], [], m, color="0.3", mfc="none" if w == "backward" else "0.3", ls="none", label=w)
-    for cs, k in zip(r.critical_speeds_rpm, r.critical_modes):
-        ax1.plot([cs], [cs / 60.0], "*", ms=13, color="tab:green", mec="k", zorder=5)
+    c = r.crossings
+    if c is not None and len(c):
+        crit = c.critical
+        if crit.any():
+            ax1.plot(c.speed_rpm[crit], c.frequency_hz[crit], "*", ms=12, color="tab:green", mec="k", zorder=5,
+                     ls="none", label="AF >= 2.5")
+        if not crit.all():
+            ax1.plot(c.speed_rpm[~crit], c.frequency_hz[~crit], "o", ms=7, mfc="none", mec="k", zorder=5,
+                     ls="none", label="AF < 2.5")
+    elif c is None:  # a result without the crossings: its 1x critical speeds
+        ax1.plot(r.critical_speeds_rpm, r.critical_speeds_rpm / 60.0, "*", ms=12, color="tab:green", mec="k",
+                 zorder=5, ls="none")
+    for cs in r.critical_speeds_rpm:
         ax1.annotate(f"{cs:.0f} rpm", (cs, cs / 60.0), xytext=(6, -12), textcoords="offset points", fontsize=8)
     unstable = np.any(r.log_dec < 0, axis=1)
     for a in (ax1, ax2):
@@ -128,8 +146,9 @@ def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
     fig.legend(*ax1.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1 - 1.15 / w, ax1.get_position().y1),
                fontsize=7, frameon=False)
     crit = ", ".join(f"{c:.0f}" for c in r.critical_speeds_rpm)
-    ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (*)" if len(r.critical_speeds_rpm)
-                                        else ": no critical speed in the range"), fontsize=11)
+    ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (1x, AF >= 2.5)"
+                                        if len(r.critical_speeds_rpm) else ": no critical speed in the range"),
+                  fontsize=11)
     ax1.grid(True, alpha=0.3)
     ax2.axhline(0, color="k", lw=0.8)
     ax2.set_ylabel("log decrement [-]")
@@ -215,13 +234,22 @@ def frf_real_imag_figure(r: FrfResult):
 
 
 def unbalance_figure(r: UnbalanceResult):
+    """0-peak amplitude (log) and phase at the output DOF over speed; the 1x crossings marked."""
     fig = new_figure(8, 6)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     node = r.output_node - 1
     comp = 0 if r.output_dof == "x" else 1
     q = r.response_m[:, node, comp]
-    a1.semilogy(r.speed_rpm, np.abs(q) * 1e6)
-    a1.set_ylabel("amplitude [um]")
+    a1.semilogy(r.speed_rpm, np.abs(q) * 1e6, label="response")
+    if r.resonances is not None and len(r.resonances.crossings):
+        c = r.resonances.crossings
+        for k, (sc, w) in enumerate(zip(c.speed_rpm, c.whirl)):
+            for a in (a1, a2):
+                a.axvline(sc, color="0.55", lw=0.8, ls="--", label=None if (k or a is a2) else "1x crossing of a mode")
+            a1.annotate(f"{sc:.0f} rpm ({w})", (sc, 0.02), xycoords=("data", "axes fraction"), rotation=90,
+                        xytext=(-3, 0), textcoords="offset points", ha="right", va="bottom", fontsize=7, color="0.35")
+        a1.legend(fontsize=8, loc="upper left")
+    a1.set_ylabel("amplitude, 0-peak [um]\n(peak-to-peak = 2x)")
     a1.set_title(f"Unbalance {r.unbalance_kg_m * 1e6:g} g mm at node {r.unbalance_node}: "
                  f"response at node {r.output_node} {r.output_dof}")
     a1.grid(True, which="both", alpha=0.3)

@@ -50,6 +50,7 @@ def write_static(path: Path, run: RunInfo, r: StaticResult) -> Path:
 
 def write_modal(path: Path, run: RunInfo, r: ModalResult) -> Path:
     g = "/modal"
+    dofs = ("x", "y", "theta_x", "theta_y", "z")[: r.mode_shape.shape[2]]  # z (last) where the rotor has it
     m = ("mode",)
     return write_h5(path, run, {
         f"{g}/frequency_hz": Data(r.frequency_hz, "Hz", m, "damped natural frequency w_d / 2 pi"),
@@ -60,15 +61,15 @@ def write_modal(path: Path, run: RunInfo, r: ModalResult) -> Path:
         f"{g}/whirl": (np.array(r.whirl, dtype=object), "1", m),
         f"{g}/forward_fraction": Data(r.forward_fraction, "1", m, "share of nodes whirling forward"),
         f"{g}/mode_shape": Data(r.mode_shape, "", ("mode", "node", "dof"),
-                                "complex mode shape normalised so that its largest translation is 1",
-                                component_units=["1", "1", "rad/m", "rad/m"]),
+                                "complex mode shape normalised so that its largest translation (x, y or z) is 1",
+                                component_units=["1", "1", "rad/m", "rad/m", "1"][:len(dofs)]),
         f"{g}/node_z_m": (r.node_z_m, "m", ("node",)),
         f"{g}/overdamped_roots": Data(r.overdamped_roots, "1/s", ("overdamped_root",),
                                       "complex roots with zeta >= 0.999, real roots included"),
         f"{g}/rigid_body_roots": Data(r.rigid_body_roots, "1/s", ("rigid_body_root",),
                                       "roots below the rigid-body threshold (1 mHz)"),
-        **labels(g, "dof", ("x", "y", "theta_x", "theta_y")),
-    }, {g: {"speed_rpm": r.speed_rpm, "mode_shape_dofs": "x, y, theta_x, theta_y"}})
+        **labels(g, "dof", dofs),
+    }, {g: {"speed_rpm": r.speed_rpm, "mode_shape_dofs": ", ".join(dofs)}})
 
 
 def _campbell_data(g: str, r: CampbellResult, full: bool) -> dict:
@@ -79,8 +80,11 @@ def _campbell_data(g: str, r: CampbellResult, full: bool) -> dict:
         f"{g}/log_dec": Data(r.log_dec, "1", sm, NOT_TRACKED, fill_nan=True),
         f"{g}/whirl": Data(np.asarray(r.whirl, dtype=object), "1", sm),
         f"{g}/critical_speed_rpm": Data(r.critical_speeds_rpm, "rpm", ("critical",),
-                                        "1x line crossing a forward mode"),
+                                        "1x crossing with AF >= 2.5 (API 684) of a mode other than backward "
+                                        "lateral; every crossing: crossings/"),
     }
+    if r.crossings is not None:
+        data.update(crossing_data(f"{g}/crossings", r.crossings))
     if full:
         data[f"{g}/damping_ratio"] = Data(r.damping_ratio, "1", sm, NOT_TRACKED, fill_nan=True)
         data[f"{g}/critical_mode"] = Data(r.critical_modes, "1", ("critical",),
@@ -94,8 +98,12 @@ def write_campbell(path: Path, run: RunInfo, r: CampbellResult, frozen: Campbell
     attrs = {"/campbell": {"tracking": "MAC between consecutive speeds",
                            "bearings": "linearised at the static state of every speed",
                            "model": r.model}}
+    if r.crossings is not None:
+        attrs["/campbell/crossings"] = crossing_attrs(r.crossings)
     if frozen is not None:
         data.update(_campbell_data("/campbell/frozen", frozen, False))
+        if frozen.crossings is not None:
+            attrs["/campbell/frozen/crossings"] = crossing_attrs(frozen.crossings)
         attrs["/campbell/frozen"] = {"bearings": f"coefficients frozen at {frozen_rpm:g} rpm", "frozen_rpm": frozen_rpm}
     return write_h5(path, run, data, attrs)
 
@@ -110,6 +118,21 @@ def write_frf(path: Path, run: RunInfo, r: FrfResult, tool_point=None) -> Path:
     }
     attrs = {"/frf": {"input_node": r.input_node, "input_dof": r.input_dof, "output_node": r.output_node,
                       "output_dof": r.output_dof, "speed_rpm": r.speed_rpm}}
+    if r.added is not None:
+        data["/frf/added"] = Data(r.added.astype(np.int8), "1", f, ADDED.format(what="frequency", near="a mode"))
+    if r.static_compliance_m_N is not None:
+        data["/frf/static_compliance_m_N"] = Data(r.static_compliance_m_N, "m/N", (),
+                                                  "K^-1 [output, input]: the receptance at 0 Hz")
+    if r.modes is not None:
+        m = ("mode",)
+        data.update({
+            "/frf/modes/frequency_hz": Data(r.modes.frequency_hz, "Hz", m, "damped natural frequency"),
+            "/frf/modes/undamped_frequency_hz": Data(r.modes.undamped_frequency_hz, "Hz", m, "|lambda| / 2 pi"),
+            "/frf/modes/damping_ratio": (r.modes.damping_ratio, "1", m),
+            "/frf/modes/whirl": (np.array(r.modes.whirl, dtype=object), "1", m),
+        })
+        attrs["/frf/modes"] = {"selection": "modes whose band f_n (1 +- 3 zeta) reaches into the frequency range; "
+                                            "the grid is refined around each"}
     if tool_point is not None:
         data.update(tool_point_frf("/frf/tool_point", tool_point.frequency_hz, tool_point.H))
         attrs["/frf/tool_point"] = {"layout": "[frequency, output (x, y), input (x, y)]"}
@@ -132,12 +155,67 @@ def tool_point_frf(g: str, frequency_hz: np.ndarray, H: np.ndarray) -> dict:
 
 def write_unbalance(path: Path, run: RunInfo, r: UnbalanceResult) -> Path:
     g = "/unbalance"
-    return write_h5(path, run, {
+    data = {
         f"{g}/speed_rpm": (r.speed_rpm, "rpm", ("speed_rpm",)),
         f"{g}/response_m": Data(r.response_m, "m", ("speed_rpm", "node", "dof"),
-                                "complex phasor: q(t) = Re(q e^{j W t})"),
+                                "complex phasor: q(t) = Re(q e^{j W t}); |q| is the 0-peak amplitude"),
         f"{g}/node_z_m": (r.node_z_m, "m", ("node",)),
         **labels(g, "dof", XY),
-    }, {g: {"unbalance_kg_m": r.unbalance_kg_m, "unbalance_node": r.unbalance_node,
-            "output_node": r.output_node, "output_dof": r.output_dof,
-            "response_convention": "complex phasor: q(t) = Re(q e^{j W t})"}})
+    }
+    attrs = {g: {"unbalance_kg_m": r.unbalance_kg_m, "unbalance_node": r.unbalance_node,
+                 "output_node": r.output_node, "output_dof": r.output_dof,
+                 "response_convention": "complex phasor: q(t) = Re(q e^{j W t})",
+                 "amplitude": AMPLITUDE}}
+    if r.added is not None:
+        data[f"{g}/added"] = Data(r.added.astype(np.int8), "1", ("speed_rpm",),
+                                  ADDED.format(what="speed", near="a 1x crossing"))
+    if r.resonances is not None:
+        res, h = r.resonances, f"{g}/resonances"
+        data.update(crossing_data(h, res.crossings))
+        data.update({
+            f"{h}/peak_speed_rpm": Data(res.peak_speed_rpm, "rpm", ("crossing",), NO_PEAK, fill_nan=True),
+            f"{h}/peak_amplitude_m": Data(res.peak_amplitude_m, "m", ("crossing",),
+                                          "0-peak amplitude at the output DOF; " + NO_PEAK, fill_nan=True),
+            f"{h}/half_power_amplification_factor": Data(
+                res.half_power_af, "1", ("crossing",), "API 684 AF = N_peak / (N_2 - N_1) from the half-power speeds "
+                "of the response at the output DOF; NaN where the peak or a half-power speed is not in the sweep",
+                fill_nan=True),
+        })
+        attrs[h] = crossing_attrs(res.crossings)
+    return write_h5(path, run, data, attrs)
+
+
+ADDED = ("1 where the {what} was added around {near} (refinement, docs/theory.md), 0 on the user's grid: "
+         "the user's grid is where this is 0")
+AMPLITUDE = "0-peak (single amplitude) = |response_m|; peak-to-peak = 2 |response_m|"
+NO_PEAK = "NaN where the output shows no response peak at the crossing"
+
+
+def crossing_data(g: str, c) -> dict:
+    """The datasets of a Crossings (analysis.resonance) in group ``g``, one entry per crossing."""
+    x = ("crossing",)
+    return {
+        f"{g}/speed_rpm": Data(c.speed_rpm, "rpm", x, "speed where n N / 60 equals the mode's damped frequency"),
+        f"{g}/order": Data(c.order, "1", x, "excitation order n (1: unbalance, 2, the tooth-passing order)"),
+        f"{g}/mode": Data(c.mode + 1, "1", x, "tracked mode: the 1-based mode coordinate of the sweep's arrays"),
+        f"{g}/frequency_hz": Data(c.frequency_hz, "Hz", x, "n N_c / 60"),
+        f"{g}/damping_ratio": (c.damping_ratio, "1", x),
+        f"{g}/whirl": (np.array(c.whirl, dtype=object), "1", x),
+        f"{g}/amplification_factor": Data(c.amplification_factor, "1", x,
+                                          "API 684 AF = 1 / (2 zeta); NaN for an unstable mode", fill_nan=True),
+        f"{g}/critical": Data(c.critical.astype(np.int8), "1", x, "1 where AF >= 2.5 (API 684: a critical speed)"),
+        f"{g}/required_separation_margin": Data(
+            c.required_margin, "1", x, "API 684 SP6.8.2.10, fraction of the operating-range edge; 0 where AF < 2.5"),
+        f"{g}/separation_margin": Data(
+            c.separation_margin, "1", x, "distance from the nearer edge of the operating range, fraction of that "
+            "edge; negative inside the range; NaN without an operating range", fill_nan=True),
+        f"{g}/meets_api684": Data(c.meets_api684.astype(np.int8), "1", x, "1 where separation >= required"),
+    }
+
+
+def crossing_attrs(c) -> dict:
+    a = {"orders": np.asarray(c.orders, float),
+         "margins": "fractions; below the minimum operating speed of it, above the maximum continuous speed of it"}
+    if c.min_operating_rpm is not None:
+        a.update(min_operating_rpm=c.min_operating_rpm, max_continuous_rpm=c.max_continuous_rpm)
+    return a

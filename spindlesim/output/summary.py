@@ -5,10 +5,9 @@ terminal (or a script reads with ``--json``) is what the file holds.  One functi
 (:data:`SUMMARIES`); each returns ``(lines, data)``: a few text lines and the same numbers as a
 JSON-able dict.  Engineering conventions used here:
 
-* amplification factor AF = 1 / (2 zeta) of the mode at a critical speed, and the separation
-  margin API 684 asks for when AF > 2.5: min(16 %, 17 (1 - 1/(AF - 1.5)) %) for a critical speed
-  below the operating speed, min(26 %, 10 + 17 (1 - 1/(AF - 1.5)) %) above it (API RP 684,
-  2nd ed., SP6.8.2.10); AF <= 2.5 needs no margin (critically damped);
+* critical speeds, amplification factors and separation margins are the analysis's (campbell.h5
+  /campbell/crossings: API 684 AF and SM computed once, in analysis/resonance.py); the summary
+  only prints them;
 * the stability threshold is the lowest speed at which a mode's damping ratio turns negative.
 """
 
@@ -18,9 +17,6 @@ from pathlib import Path
 from typing import Any, Callable
 
 import numpy as np
-
-API684_AF = 2.5
-
 
 def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
     """(file name, lines, data) for every HDF5 file among ``paths`` that has a summary."""
@@ -39,15 +35,6 @@ def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
                 data["complete"] = False
         out.append((Path(p).name, lines, data))
     return out
-
-
-def required_separation_margin(af: float, below: bool) -> float:
-    """API 684 separation margin [fraction] for a critical speed with amplification factor ``af``
-    below (``below``) or above the operating speed; 0 when AF <= 2.5."""
-    if not np.isfinite(af) or af <= API684_AF:
-        return 0.0
-    base = 17.0 * (1.0 - 1.0 / (af - 1.5))
-    return (min(16.0, base) if below else min(26.0, 10.0 + base)) / 100.0
 
 
 def _f(x) -> float:
@@ -106,23 +93,30 @@ def _campbell(f):
     wh = g["whirl"][:].astype(str)
     op = _deck_speed(f)
     lines = [f"{len(sp)} speeds {sp[0]:g}-{sp[-1]:g} rpm, {fr.shape[1]} modes ({g.attrs.get('model', '')})"]
-    crit = []
-    for s, k in zip(g["critical_speed_rpm"][:], g["critical_mode"][:]):
-        zk = float(np.interp(s, sp, z[:, int(k)]))
-        af = 1.0 / (2.0 * zk) if zk > 0 else np.inf
-        entry = {"speed_rpm": float(s), "mode": int(k) + 1, "amplification_factor": af}
-        text = f"  critical speed {s:9.0f} rpm (mode {int(k) + 1}), AF {af:.3g}"
-        if op:
-            below = s < op
-            need = required_separation_margin(af, below)
-            have = abs(op - s) / s
-            entry.update(separation_margin=have, required_margin=need, meets_api684=bool(have >= need))
-            text += (f", separation from {op:g} rpm {100 * have:.1f} % (API 684 asks {100 * need:.1f} %"
-                     f"{'' if have >= need else ': NOT MET'})")
-        crit.append(entry)
-        lines.append(text)
-    if not crit:
-        lines.append("  no critical speed (1x crossing of a forward mode with AF >= 2.5) in the range")
+    crossings = _crossing_rows(g["crossings"]) if "crossings" in g else []
+    if "crossings" in g:
+        a = g["crossings"].attrs
+        orders = ", ".join(f"{n:g}x" for n in np.asarray(a.get("orders", []), float))
+        if "min_operating_rpm" in a:
+            lo, hi = float(a["min_operating_rpm"]), float(a["max_continuous_rpm"])
+            where = f"{lo:g} rpm" if lo == hi else f"{lo:g}-{hi:g} rpm"
+            lines.append(f"  operating speed {where}; API 684 separation margins from it")
+        if crossings:
+            lines.append(f"  crossings of {orders} with the tracked modes (AF = 1/(2 zeta), API 684 critical when "
+                         ">= 2.5):")
+            lines.append("     speed rpm  order  mode  whirl      freq Hz          AF  margin req  margin  API 684")
+            lines += [_crossing_line(c) for c in crossings]
+        else:
+            lines.append(f"  no crossing of {orders} with a tracked mode in the range")
+    crit = [c for c in crossings if c["order"] == 1.0 and c["critical"] and c["whirl"] != "backward"]
+    if "crossings" not in g:  # a file from before the crossings: its critical speeds only
+        crit = [{"speed_rpm": float(s), "mode": int(k) + 1} for s, k in zip(g["critical_speed_rpm"][:],
+                                                                                g["critical_mode"][:])]
+    if crit:
+        lines.append("  critical speeds (1x, AF >= 2.5, not backward): "
+                     + ", ".join(f"{c['speed_rpm']:.0f} rpm (mode {c['mode']})" for c in crit))
+    else:
+        lines.append("  no critical speed (1x crossing with AF >= 2.5 of a mode other than backward) in the range")
     unstable = np.argwhere(z < 0)
     threshold = None
     if unstable.size:
@@ -132,7 +126,41 @@ def _campbell(f):
         lines.append(f"  UNSTABLE from {sp[i]:g} rpm: mode {k + 1} ({wh[i, k]}, {fr[i, k]:.1f} Hz) has negative damping")
     else:
         lines.append("  every tracked mode is stable over the range")
-    return lines, {"critical_speeds": crit, "stability_threshold": threshold, "operating_speed_rpm": op}
+    return lines, {"critical_speeds": crit, "crossings": crossings, "stability_threshold": threshold,
+                   "operating_speed_rpm": op}
+
+
+def _crossing_rows(c) -> list[dict]:
+    """The crossings of a campbell.h5 or unbalance.h5 group, as written by the analysis."""
+    keys = ("speed_rpm", "order", "mode", "frequency_hz", "damping_ratio", "amplification_factor",
+            "required_separation_margin", "separation_margin")
+    cols = {k: c[k][:] for k in keys}
+    whirl = c["whirl"][:].astype(str)
+    crit, meets = c["critical"][:], c["meets_api684"][:]
+    rows = []
+    for j in range(len(cols["speed_rpm"])):
+        row = {k: (int(v[j]) if k == "mode" else _finite(v[j])) for k, v in cols.items()}
+        row.update(whirl=str(whirl[j]), critical=bool(crit[j]), meets_api684=bool(meets[j]))
+        rows.append(row)
+    return rows
+
+
+def _finite(x) -> float | None:
+    x = float(x)
+    return x if np.isfinite(x) else None
+
+
+def _crossing_line(c: dict) -> str:
+    af = "unstable" if c["amplification_factor"] is None else f"{c['amplification_factor']:.3g}"
+    sm = c["separation_margin"]
+    if not c["critical"]:
+        req, have, verdict = "-", "-" if sm is None else f"{100 * sm:.1f} %", "not critical (AF < 2.5)"
+    else:
+        req = f"{100 * c['required_separation_margin']:.1f} %"
+        have = "-" if sm is None else f"{100 * sm:.1f} %"
+        verdict = "no operating speed" if sm is None else ("met" if c["meets_api684"] else "NOT MET")
+    return (f"  {c['speed_rpm']:11.0f}  {c['order']:4g}x  {c['mode']:4d}  {c['whirl']:9s} {c['frequency_hz']:8.1f}  "
+            f"{af:>10s}  {req:>10s}  {have:>6s}  {verdict}")
 
 
 def _deck_speed(f) -> float | None:
@@ -151,20 +179,53 @@ def _frf(f):
     fr, h = g["frequency_hz"][:], g["receptance_m_N"][:]
     a = g.attrs
     mag = np.abs(h)
-    peaks = [i for i in range(1, len(mag) - 1) if mag[i] >= mag[i - 1] and mag[i] > mag[i + 1]]
-    peaks = sorted(peaks, key=lambda i: -mag[i])[:4]
-    lines = [f"node {int(a['output_node'])} {a['output_dof']} / node {int(a['input_node'])} {a['input_dof']} at "
-             f"{_f(a['speed_rpm']):g} rpm; static-end compliance {mag[0] * 1e6:.4g} um/N"]
-    data = {"peaks": []}
-    for i in sorted(peaks, key=lambda i: fr[i]):
-        lines.append(f"  peak {fr[i]:9.1f} Hz  |H| {mag[i] * 1e6:.4g} um/N  dynamic stiffness {1e-6 / mag[i]:.4g} N/um")
-        data["peaks"].append({"frequency_hz": float(fr[i]), "receptance_m_N": float(mag[i]),
-                              "dynamic_stiffness_N_m": float(1 / mag[i])})
+    head = (f"node {int(a['output_node'])} {a['output_dof']} / node {int(a['input_node'])} {a['input_dof']} at "
+            f"{_f(a['speed_rpm']):g} rpm; ")
+    data: dict[str, Any] = {"peaks": []}
+    if "static_compliance_m_N" in g:
+        c0 = _f(g["static_compliance_m_N"][()])
+        head += f"static compliance (0 Hz, K^-1) {c0 * 1e6:.4g} um/N"
+        data["static_compliance_m_N"] = c0
+    else:
+        head += f"|H| at {fr[0]:g} Hz {mag[0] * 1e6:.4g} um/N (no static compliance in the file)"
+    lines = [head]
+    if "added" in g:
+        n_add = int(np.sum(g["added"][:]))
+        lines.append(f"  {len(fr) - n_add} frequencies of the deck's grid + {n_add} added around the modes in range")
+    local = [i for i in range(1, len(mag) - 1) if mag[i] >= mag[i - 1] and mag[i] > mag[i + 1]]
+    if "modes" in g:  # every mode in range, with the peak of |H| nearest to it within its band f_n (1 +- 3 zeta)
+        m = g["modes"]
+        lo, hi = fr[0], fr[-1]
+        by_peak: dict[int, list[str]] = {}
+        unseen: list[tuple[float, str]] = []
+        for fd, fn, zk, wk in zip(m["frequency_hz"][:], m["undamped_frequency_hz"][:], m["damping_ratio"][:],
+                                  m["whirl"][:].astype(str)):
+            if not lo <= fd <= hi:
+                continue
+            near = [i for i in local if abs(fr[i] - fn) <= 3 * max(abs(zk), 1e-6) * fn]
+            name = f"{fd:.1f} Hz {wk} (zeta {zk:.3g})"
+            if near:
+                by_peak.setdefault(min(near, key=lambda i: abs(fr[i] - fn)), []).append(name)
+            else:
+                unseen.append((float(fd), f"  mode {name}: no peak of |H| (not seen at this output and input)"))
+        rows = [(float(fr[i]), f"  peak {fr[i]:9.2f} Hz  |H| {mag[i] * 1e6:.4g} um/N  dynamic stiffness "
+                               f"{1e-6 / mag[i]:.4g} N/um  (mode {', '.join(by_peak[i])})") for i in by_peak]
+        lines += [text for _, text in sorted(rows + unseen)]
+        for i in sorted(by_peak):
+            data["peaks"].append({"frequency_hz": float(fr[i]), "receptance_m_N": float(mag[i]),
+                                  "dynamic_stiffness_N_m": float(1 / mag[i]), "modes": by_peak[i]})
+    else:  # a file without the modes: the local maxima of |H|
+        for i in local:
+            lines.append(f"  peak {fr[i]:9.1f} Hz  |H| {mag[i] * 1e6:.4g} um/N  dynamic stiffness "
+                         f"{1e-6 / mag[i]:.4g} N/um")
+            data["peaks"].append({"frequency_hz": float(fr[i]), "receptance_m_N": float(mag[i]),
+                                  "dynamic_stiffness_N_m": float(1 / mag[i])})
     if "tool_point" in g:
         H = g["tool_point/receptance_m_N"][:]
+        ft = g["tool_point/frequency_hz"][:]
         re = H[:, 0, 0].real
         i = int(np.argmin(re))
-        lines.append(f"  tool point: most negative real part of H_xx {re[i] * 1e6:.4g} um/N at {fr[i]:.1f} Hz")
+        lines.append(f"  tool point: most negative real part of H_xx {re[i] * 1e6:.4g} um/N at {ft[i]:.1f} Hz")
         data["tool_point_min_real_m_N"] = float(re[i])
     return lines, data
 
@@ -176,9 +237,35 @@ def _unbalance(f):
     r = g["response_m"][:, node - 1, 0 if dof == "x" else 1]
     sp = g["speed_rpm"][:]
     i = int(np.argmax(np.abs(r)))
-    lines = [f"peak response at node {node} {dof}: {abs(r[i]) * 1e6:.4g} um at {sp[i]:g} rpm "
-             f"(unbalance {float(a['unbalance_kg_m']) * 1e6:g} g mm at node {int(a['unbalance_node'])})"]
-    return lines, {"peak_m": float(abs(r[i])), "peak_speed_rpm": float(sp[i])}
+    kind = str(a.get("amplitude", "0-peak")).split(" ")[0]  # the phasor modulus: 0-peak
+    amp = abs(r[i])
+    lines = [f"peak response at node {node} {dof}: {amp * 1e6:.4g} um {kind} ({2 * amp * 1e6:.4g} um peak-to-peak) at "
+             f"{sp[i]:.6g} rpm (unbalance {float(a['unbalance_kg_m']) * 1e6:g} g mm at node "
+             f"{int(a['unbalance_node'])})"]
+    data: dict[str, Any] = {"peak_m": float(amp), "peak_to_peak_m": float(2 * amp), "peak_speed_rpm": float(sp[i]),
+                            "amplitude": kind}
+    if "added" in g:
+        n_add = int(np.sum(g["added"][:]))
+        lines.append(f"  {len(sp) - n_add} speeds of the deck's grid + {n_add} added around the 1x crossings")
+    if "resonances" in g:
+        res = g["resonances"]
+        rows = _crossing_rows(res)
+        for row, ps, pa, af in zip(rows, res["peak_speed_rpm"][:], res["peak_amplitude_m"][:],
+                                   res["half_power_amplification_factor"][:]):
+            row.update(peak_speed_rpm=_finite(ps), peak_amplitude_m=_finite(pa), half_power_af=_finite(af))
+            eig = "-" if row["amplification_factor"] is None else f"{row['amplification_factor']:.3g}"
+            text = (f"  1x crossing {row['speed_rpm']:.6g} rpm, mode {row['mode']} ({row['whirl']}, "
+                    f"{row['frequency_hz']:.1f} Hz, AF 1/(2 zeta) {eig}): ")
+            if np.isfinite(pa):
+                hp = f", AF from half-power speeds {af:.3g}" if np.isfinite(af) else ""
+                text += f"peak {pa * 1e6:.4g} um {kind} at {ps:.6g} rpm{hp}"
+            else:
+                text += "no response peak at the output"
+            lines.append(text)
+        if not rows:
+            lines.append("  no 1x crossing of a mode in the speed range")
+        data["resonances"] = rows
+    return lines, data
 
 
 def _per_bearing(f, group: str, fields: list[tuple[str, str, float, str]]):

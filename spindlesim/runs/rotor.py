@@ -64,11 +64,14 @@ def run_campbell(loaded, outdir, run, opts, progress):
     speeds = value_range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
     rotor = build_rotor(d)
     modes = first(opts.get("modes"), d.campbell.modes)
-    res = solve_campbell(rotor, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")))
+    orders, operating = excitation_orders(d), d.operating.speed_range_rpm
+    res = solve_campbell(rotor, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")),
+                         orders=orders, operating=operating)
     frozen_rpm = d.campbell.compare_frozen_rpm
     frozen = None
     if frozen_rpm is not None:
-        frozen = solve_campbell(rotor, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm)
+        frozen = solve_campbell(rotor, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
+                                operating=operating)
     if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
         run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
     paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm)]
@@ -83,6 +86,13 @@ def run_campbell(loaded, outdir, run, opts, progress):
     return paths
 
 
+def excitation_orders(d) -> tuple[float, ...]:
+    """The excitation orders a Campbell diagram checks: 1x (unbalance), 2x (misalignment, a shaft's
+    asymmetry) and, for a deck with a milling cutter, the tooth-passing order."""
+    teeth = getattr(d.chatter, "teeth", None) if d.chatter is not None else None
+    return tuple(sorted({1.0, 2.0} | ({float(teeth)} if teeth else set())))
+
+
 def run_frf(loaded, outdir, run, opts, progress):
     from ..analysis.frf import solve_frf
     from ..output.rotor_plots import frf_magnitude_phase_figure, frf_real_imag_figure
@@ -95,12 +105,12 @@ def run_frf(loaded, outdir, run, opts, progress):
     tip = rotor.tool_tip + 1 if rotor.tool_tip is not None else 1
     inp, out = fr.input or NodeDof(node=tip, dof="x"), fr.output or NodeDof(node=tip, dof="x")
     f = value_range(fr.frequencies_hz)
-    res = solve_frf(rotor, f, inp.node, inp.dof, out.node, out.dof)
+    res = solve_frf(rotor, f, inp.node, inp.dof, out.node, out.dof, refine=True)
     tool = None
-    if rotor.tool_tip is not None:  # the tool point's 2 x 2 receptance (xx, xy; yx, yy)
+    if rotor.tool_tip is not None:  # the tool point's 2 x 2 receptance (xx, xy; yx, yy), on the refined grid
         from ..analysis.tool_point import tool_point_model
 
-        tool = tool_point_model(rotor).frf(f)
+        tool = tool_point_model(rotor).frf(res.frequency_hz)
     paths = [write_frf(outdir / "frf.h5", run, res, tool)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "frf_magnitude_phase.png", frf_magnitude_phase_figure, res))
@@ -114,7 +124,7 @@ def run_frf(loaded, outdir, run, opts, progress):
 
 
 def run_unbalance(loaded, outdir, run, opts, progress):
-    from ..analysis.frf import solve_unbalance
+    from ..analysis.unbalance import solve_unbalance
     from ..output.rotor_plots import unbalance_figure
     from ..output.rotor_writers import write_unbalance
 
@@ -123,7 +133,7 @@ def run_unbalance(loaded, outdir, run, opts, progress):
     u = require_section(loaded, "unbalance", "unbalance", "node, amount_g_mm, output, speeds_rpm")
     rotor = build_rotor(d)
     res = solve_unbalance(rotor, value_range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
-                          u.output.node, u.output.dof)
+                          u.output.node, u.output.dof, refine=True, operating=d.operating.speed_range_rpm)
     paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "unbalance.png", unbalance_figure, res))

@@ -51,3 +51,37 @@ def test_axial_load_compresses_bar_between_no_axial_support():
     r = _rotor(1.0)
     with pytest.raises(ValueError, match="singular"):
         solve_static(r)  # nothing holds the shaft axially: reported, not a garbage answer
+
+
+def test_axial_mode_shape_is_stored_and_drawn(tmp_path):
+    """Issue 21 item 7: the axial mode keeps its axial component.  Free-free bar (the lateral bearings
+    hold nothing axially): the first elastic axial mode of N equal linear elements is cos(pi z / L) at
+    the nodes, exactly (it satisfies the element recurrence and both free ends), at the discrete
+    frequency of test_axial_bar_free_free_frequencies; modal.h5 holds it under dof "z" and
+    modal_shapes.png draws it."""
+    import h5py
+
+    from spindlesim.output.hdf5 import RunInfo
+    from spindlesim.output.rotor_plots import modes_figure
+    from spindlesim.output.rotor_writers import write_modal
+
+    r = _rotor(1e-300)
+    m = solve_modal(r, n_modes=30)
+    k = list(m.whirl).index("axial")
+    c = np.sqrt(211e9 / 7810)
+    kh = np.pi / 10
+    assert m.undamped_frequency_hz[k] * 2 * np.pi == pytest.approx(c / 0.1 * np.sqrt(6 * (1 - np.cos(kh)) / (2 + np.cos(kh))),
+                                                                  rel=1e-9)
+    z = m.mode_shape[k, :, 4]
+    exact = np.cos(np.pi * r.node_z_m / 1.0)
+    np.testing.assert_allclose(z, exact * np.sign(z[0].real), atol=1e-9)
+    assert np.max(np.abs(m.mode_shape[k, :, :2])) < 1e-6  # no lateral part
+    path = write_modal(tmp_path / "modal.h5", RunInfo("deck", "test", "0"), m)
+    with h5py.File(path) as f:
+        dofs = list(f["modal/dof"][:].astype(str))
+        assert dofs == ["x", "y", "theta_x", "theta_y", "z"]
+        np.testing.assert_allclose(f["modal/mode_shape"][k, :, dofs.index("z")], z)
+    fig = modes_figure(m, max_modes=k + 1)
+    drawn = [ln for ln in fig.axes[k].lines if ln.get_label().startswith("z")]
+    assert len(drawn) == 1
+    np.testing.assert_allclose(drawn[0].get_ydata(), z.real[np.argsort(r.node_z_m, kind="stable")])

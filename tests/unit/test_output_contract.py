@@ -245,7 +245,7 @@ def _zero_receptance(r):  # a zero receptance makes the dynamic stiffness 1/H in
     ("static", "spindlesim.analysis.static", "solve_static", _nan_bearing_forces,
      "static.h5: refusing to write non-finite results: /static/bearing_force_N has 4 NaN value(s) of 4"),
     ("frf", "spindlesim.analysis.frf", "solve_frf", _zero_receptance,
-     "frf.h5: refusing to write non-finite results: /frf/dynamic_stiffness_N_m has 1 infinite value(s) of 1000"),
+     "frf.h5: refusing to write non-finite results: /frf/dynamic_stiffness_N_m has 1 infinite value(s) of "),
 ], ids=["static-nan", "frf-complex-inf"])
 def test_non_finite_result_exits_1_with_one_line(tmp_path, monkeypatch, command, module, solver, spoil, message):
     """The CLI on the default deck, its solver's result spoilt as a numerical failure would: exit 1,

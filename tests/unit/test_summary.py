@@ -6,11 +6,11 @@ import pytest
 from click.testing import CliRunner
 
 from spindlesim.cli import main
-from spindlesim.output.summary import required_separation_margin
+from spindlesim.analysis.resonance import required_separation_margin
 
 
 @pytest.mark.parametrize("af,below,expect", [
-    (2.0, True, 0.0),  # AF <= 2.5: critically damped, no margin (API 684)
+    (2.0, True, 0.0),  # AF < 2.5: critically damped, no margin (API 684)
     (5.0, True, 0.17 * (1 - 1 / 3.5)),  # 12.1 %
     (5.0, False, 0.10 + 0.17 * (1 - 1 / 3.5)),  # 22.1 %
     (100.0, True, 0.16),  # capped at 16 % below the operating speed
