@@ -19,6 +19,7 @@ import os
 import signal
 import threading
 import time
+import warnings
 from concurrent.futures import Executor, ProcessPoolExecutor
 from typing import Iterator
 
@@ -111,10 +112,13 @@ def make_executor(workers: int | None = None, scheduler: str | None = None) -> I
         from distributed import Client, LocalCluster
     except ImportError as exc:  # pragma: no cover - depends on the installation
         raise RuntimeError("--scheduler needs Dask: pip install 'spindlesim[dask]'") from exc
-    _quiet_dask()
+    quiet = _quiet_dask()
     if scheduler == "local":
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=logging.ERROR)
+        with warnings.catch_warnings():
+            if quiet:  # "Port 8787 is already in use" when another cluster runs: not the user's concern
+                warnings.simplefilter("ignore")
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                   dashboard_address=":0", silence_logs=logging.ERROR)
         client = Client(cluster)
     else:
         cluster = None
@@ -131,7 +135,7 @@ def make_executor(workers: int | None = None, scheduler: str | None = None) -> I
     _close_dask(client, cluster)
 
 
-def _quiet_dask() -> None:
+def _quiet_dask() -> bool:
     """Dask's own log lines (scheduler and worker start-up, connections closed at shutdown) follow the
     command's verbosity: none by default, its INFO lines with -v, DEBUG with -vv.  Importing distributed
     sets its loggers' levels from its configuration, so this runs after the import.  A case that fails
@@ -140,6 +144,7 @@ def _quiet_dask() -> None:
     level = logging.CRITICAL if asked > logging.INFO else asked
     for name in ("distributed", "tornado", "bokeh"):
         logging.getLogger(name).setLevel(level)
+    return level == logging.CRITICAL
 
 
 def _close_dask(client, cluster) -> None:
