@@ -82,3 +82,32 @@ def test_run_stopped_before_the_steady_part_has_no_blank_panels():
                      TransientSettings(0.5, sample_rate_hz=1000, step_s=1e-4, settle_s=0.3,
                                        perturbation=Perturbation(0, 1.0)))
     assert "not enough steady data" in _texts(spectrum_figure(short))  # too few samples even for that
+
+
+def test_help_names_the_node_the_file_records():
+    """`transient --help` says where the response is recorded, and the engine records there: the rig's
+    journal, else rotor_transient.record_node or the node of the first entry under bearings: (seed 001
+    lists its ball pair at node 1 before the DTRB at node 5: the old help said "at the DTRB node")."""
+    from pathlib import Path
+
+    from spindlesim.analysis.transient.engine import record_node
+    from spindlesim.deck import default_deck, load_deck
+    from spindlesim.runs.transient import rig_setup, rotor_setup
+
+    text = " ".join(CliRunner().invoke(command, ["--help"]).output.split())
+    assert "DTRB node" not in text
+    assert "rotor_transient.record_node" in text and "node of the first entry under bearings:" in text
+    assert "journal" in text and "centre recorded" in text
+
+    deck = load_deck(Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml").deck
+    rotor, settings = rotor_setup(deck, {})
+    assert settings.record_node is None  # the deck leaves it to the default
+    first, dtrb = deck.bearings[0], next(b for b in deck.bearings if b.type == "dtrb")
+    assert first.type == "ball" and dtrb.node != first.node
+    assert record_node(rotor, settings) == first.node - 1  # 0-based
+    chosen = rotor_setup(deck.model_copy(update={"rotor_transient": deck.rotor_transient.model_copy(
+        update={"record_node": dtrb.node})}), {})
+    assert record_node(*chosen) == dtrb.node - 1
+
+    rig_rotor, rig_settings = rig_setup(default_deck("transient").deck.transient, {})
+    assert rig_rotor.dofs.n_nodes == 1 and record_node(rig_rotor, rig_settings) == 0

@@ -165,6 +165,13 @@ def simulate(rotor: Rotor, settings: TransientSettings, progress=None) -> Transi
                    p.owner, p.settle_s, time.perf_counter() - wall0)
 
 
+def record_node(rotor: Rotor, settings: TransientSettings) -> int:
+    """The node (0-based) whose x, y are recorded: the settings' record node, else the first bearing's."""
+    if settings.record_node is not None:
+        return settings.record_node
+    return rotor.bearings[0].node if rotor.bearings else 0
+
+
 def stability_step(system, x0: np.ndarray, v0: np.ndarray) -> float:
     """RK4's stability limit 2 / rho of the system linearised at (x0, v0) (``fixed_step.stability_step_s``)."""
     W = system.profile.start_rad_s
@@ -216,9 +223,7 @@ def _poincare_targets(ratios: dict[str, float], profile: SpeedProfile, settle: f
 def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, targets, owner, settle, wall):
     dofs = rotor.dofs
     n = dofs.size
-    node = settings.record_node
-    if node is None:
-        node = rotor.bearings[0].node if rotor.bearings else 0
+    node = record_node(rotor, settings)
     ix, iy = dofs.index(node, "x"), dofs.index(node, "y")
     X, V, t = traj.x, traj.v, traj.time_s
     disp = np.column_stack([X[:, ix], X[:, iy]]) if len(t) else np.zeros((0, 2))
