@@ -235,12 +235,33 @@ def _transient(f):
         data["dominant_hz"] = float(fr[k])
     elif "spectrum" in g:
         lines.append("  no spectrum: not enough steady data")
+    if "poincare" in g and "periodicity" in g["poincare"].attrs:
+        lines.append("  " + _poincare_words(g["poincare"].attrs))
+        data["poincare_periodicity"] = str(g["poincare"].attrs["periodicity"])
     for key in ("roller_pass_frequency_hz", "cage_frequency_hz"):
         if key in a:
             data[key] = float(a[key])
     if "roller_pass_frequency_hz" in a:
         lines.append(f"  roller pass {float(a['roller_pass_frequency_hz']):.2f} Hz, cage {float(a['cage_frequency_hz']):.2f} Hz")
     return lines, data
+
+
+def _poincare_words(p) -> str:
+    """The primary Poincare set's periodicity, with its tolerance, from its group's attributes."""
+    label, n = str(p["periodicity"]), int(p.get("classified_points", 0))
+    rel = float(p.get("relative_tolerance", np.nan))
+    tol = f"tolerance {float(p['tolerance_m']):.3g} m" + (f" = {100 * rel:.2g} % of the orbit" if np.isfinite(rel)
+                                                           else "")
+    s = f"Poincare {p.get('sampling', '')}: {label}"
+    if label.startswith("period-"):
+        k = int(p["period"])
+        ext = float(p.get("orbit_extent_m", 0.0))
+        within = (f"all within {100 * float(p['spread_m']) / ext:.2g} % of the orbit size of their mean"
+                  if k == 1 and ext > 0 else f"on {k} places")
+        return s + f" ({n} points, {within}; {tol})"
+    if n:
+        return s + f" ({int(p['distinct_points'])} distinct places among {n} points; {tol})"
+    return s
 
 
 def _chatter(f):

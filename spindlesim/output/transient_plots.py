@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
 from ..analysis.transient.result import TransientResult
-from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum, distinct_points
+from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum
 from .figures import new_figure
 
 UM = 1e6
@@ -269,18 +269,28 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
     return fig
 
 
-def period_label(k: int, n: int) -> str:
-    """"period-k" only when the n points visit k places at least twice each."""
-    if 1 <= k <= 8 and n >= 2 * k:
-        return f"period-{k}"
-    if k == n:
-        return f"{n} distinct points" + (" (too few to tell a period)" if n < 16 else " (not periodic)")
-    return f"{k} distinct points of {n} (not periodic)"
+def _points(n: int) -> str:
+    return f"{n} point" + ("" if n == 1 else "s")
+
+
+def _periodicity_text(p) -> str:
+    """A Poincare set's periodicity in words, with its tolerance relative to the orbit."""
+    q = p.periodicity
+    scale, unit = length_unit(q.tolerance_m)
+    tol = f"tolerance {q.tolerance_m / scale:.2g} {unit}"
+    if math.isfinite(q.relative_tolerance):
+        tol += f" ({100 * q.relative_tolerance:.2g} % of the orbit)"
+    if q.kind == "period" and q.period == 1:
+        share = f" ({100 * q.spread_m / q.extent_m:.2g} % of the orbit)" if q.extent_m > 0 else ""
+        return f"all {_points(q.points)} within {q.spread_m / scale:.2g} {unit} of their mean{share}; {tol}"
+    if q.kind == "period":
+        return f"{_points(q.points)} on {q.period} places; {tol}"
+    return f"{_points(q.points)}, {q.distinct} distinct; {tol}"
 
 
 def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
-    """Every Poincare set: x against dx/dt about the steady mean; "period-k" when the points fall on
-    k places (a coincident set is drawn as one point, not as round-off noise)."""
+    """Every Poincare set: x against dx/dt about the steady mean, with what the analysis says of it
+    (period-k, not periodic, too few points; a period-1 set is drawn as one point)."""
     sets = [p for p in res.poincare if p.time_s.size]
     ncol = min(max(len(sets), 1), 3)
     nrow = max(1, math.ceil(len(sets) / ncol))
@@ -297,28 +307,25 @@ def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
     x0, v0 = (float(x_all.mean()), float(v_all.mean())) if x_all.size else (0.0, 0.0)
     xs, xu = length_unit(float(np.ptp(x_all)) if x_all.size else 1e-12)
     vs, vu = length_unit(float(np.ptp(v_all)) if v_all.size else 1e-12)
-    tol = 1e-4 * max(float(np.ptp(x_all)) if x_all.size else 0.0, 1e-15)
     for ax, p in zip(axes, sets):
-        k = distinct_points(p.xy_m, tol)
+        q = p.periodicity
         x, v = (p.xy_m[:, 0] - x0) / xs, (p.v_m_s[:, 0] - v0) / vs
-        if k == 1 and len(x) >= 2:
-            spread = float(np.max(np.abs(p.xy_m - p.xy_m.mean(axis=0))))
+        if q is not None and q.kind == "period" and q.period == 1:
             ax.plot([x.mean()], [v.mean()], "o", ms=9, mfc="none", color="tab:red", gid="period-1")
-            ax.text(0.5, 0.9, f"period-1: all {len(x)} points coincide\n(within {spread * UM:.2g} um)",
-                    transform=ax.transAxes, ha="center", va="top", fontsize=8, color="tab:red")
             hx = max(0.5 * float(np.ptp(x_all)) / xs, 1e-9)
             hv = max(0.5 * float(np.ptp(v_all)) / vs, 1e-9)
             ax.set_xlim(x.mean() - hx, x.mean() + hx)
             ax.set_ylim(v.mean() - hv, v.mean() + hv)
-            label = "period-1"
         else:
             ax.plot(x, v, ".", ms=3)
-            label = period_label(k, len(x))
         for axis in (ax.xaxis, ax.yaxis):
             axis.set_major_locator(MaxNLocator(5))
         ax.set_xlabel(f"x - mean [{xu}]")
         ax.set_ylabel(f"dx/dt - mean [{vu}/s]")
-        ax.set_title(f"once per {p.name} ({p.frequency_hz:.4g} Hz): {label}", fontsize=8)
+        label = "" if q is None else f"period-{q.period}" if q.periodic else q.kind
+        words = "" if q is None else "\n" + textwrap.fill(_periodicity_text(p), 70)
+        ax.set_title(f"once per {p.name} ({p.frequency_hz:.4g} Hz): {label}{words}", fontsize=7.5,
+                     color="tab:red" if q is not None and q.periodic else "black")
         ax.grid(True, alpha=0.3)
     for ax in axes[len(sets):]:
         ax.remove()

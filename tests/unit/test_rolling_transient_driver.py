@@ -49,6 +49,9 @@ def test_sampling_spectrum_and_poincare_of_an_exact_solution(method, kw, tol):
     assert np.allclose(np.diff(p.time_s), 0.02)
     assert distinct_points(p.xy_m, 10 * tol) == 1
     assert p.xy_m[0] == pytest.approx([A, 0.0], abs=tol)
+    # the engine says so: period-1
+    assert p.periodicity.label == "period-1" and p.periodicity.points == p.time_s.size == 21
+    assert p.periodicity.spread_m <= 2 * tol and p.periodicity.extent_m == pytest.approx(2 * A, rel=1e-3)
 
 
 @dataclass(frozen=True)

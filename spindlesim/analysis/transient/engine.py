@@ -14,9 +14,9 @@
    points; the other Poincare sets (revolution, cage, each rolling bearing's roller pass) are
    interpolated between steps.  A run-up samples them at the shaft angles where they fall.
 4. Outputs: the record node's (x, y), every rotor DOF, each bearing's ``outputs()`` (its force
-   and what it adds), the spectrum of the steady part, the Poincare sets.  A run that stops
-   early (interrupt, Newton failure, non-finite state) returns what it computed with
-   ``complete=False`` and the reason.
+   and what it adds), the spectrum of the steady part, the Poincare sets with their periodicity
+   (``steadiness``).  A run that stops early (interrupt, Newton failure, non-finite state) returns
+   what it computed with ``complete=False`` and the reason.
 """
 
 from __future__ import annotations
@@ -36,6 +36,7 @@ from . import explicit, ivp, newmark
 from .fixed_step import plan_steps, stability_step_s
 from .result import Plan, PoincareSet, TransientResult
 from .spectrum import Spectrum, amplitude_spectrum
+from .steadiness import orbit_scale, poincare_periodicity
 from .system import Excitation, SpeedProfile, assemble_system
 
 log = logging.getLogger(__name__)
@@ -161,8 +162,7 @@ def simulate(rotor: Rotor, settings: TransientSettings, progress=None) -> Transi
     wall0 = time.perf_counter()
     p = prepare(rotor, settings)
     traj = integrate(p, settings, progress)
-    return _result(rotor, settings, p.system, p.operating, p.start, traj, p.plan, p.ratios, p.primary, p.targets,
-                   p.owner, p.settle_s, time.perf_counter() - wall0)
+    return _result(rotor, settings, p, traj, time.perf_counter() - wall0)
 
 
 def record_node(rotor: Rotor, settings: TransientSettings) -> int:
@@ -220,7 +220,9 @@ def _poincare_targets(ratios: dict[str, float], profile: SpeedProfile, settle: f
     return t[order], o[order]
 
 
-def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, targets, owner, settle, wall):
+def _result(rotor, settings, p: Prepared, traj, wall: float) -> TransientResult:
+    system, st, plan, ratios, primary, targets, owner, settle = (p.system, p.start, p.plan, p.ratios, p.primary,
+                                                                 p.targets, p.owner, p.settle_s)
     dofs = rotor.dofs
     n = dofs.size
     node = record_node(rotor, settings)
@@ -244,6 +246,7 @@ def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, target
     steady = t >= settle - 1e-12
     spec = amplitude_spectrum(disp[steady], plan.sample_rate_hz) if steady.sum() >= 4 else \
         Spectrum(np.zeros(0), np.zeros((0, 2)))
+    extent, noise = orbit_scale(disp[steady])
     sets = []
     reached = traj.poincare_time_s
     names = list(ratios)
@@ -254,10 +257,11 @@ def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, target
         rows = np.minimum(rows, max(len(reached) - 1, 0))
         PX = traj.poincare_x[rows] if len(reached) else np.zeros((0, traj.x.shape[1]))
         PV = traj.poincare_v[rows] if len(reached) else np.zeros((0, traj.x.shape[1]))
-        sets.append(PoincareSet(name, ratios[name] * system.profile.start_rad_s / (2 * math.pi), tj,
-                                np.column_stack([PX[:, ix], PX[:, iy]]) if len(tj) else np.zeros((0, 2)),
-                                np.column_stack([PV[:, ix], PV[:, iy]]) if len(tj) else np.zeros((0, 2))))
-    sets.sort(key=lambda p: p.name != primary)  # the primary period first
+        xy = np.column_stack([PX[:, ix], PX[:, iy]]) if len(tj) else np.zeros((0, 2))
+        sets.append(PoincareSet(name, ratios[name] * system.profile.start_rad_s / (2 * math.pi), tj, xy,
+                                np.column_stack([PV[:, ix], PV[:, iy]]) if len(tj) else np.zeros((0, 2)),
+                                poincare_periodicity(xy, extent, noise)))
+    sets.sort(key=lambda q: q.name != primary)  # the primary period first
     freqs = {k: r * system.profile.start_rad_s / (2 * math.pi) for k, r in ratios.items()}
     return TransientResult(
         method=settings.method, step_s=plan.step_s, sample_rate_hz=plan.sample_rate_hz, time_s=t, speed_rpm=speeds,

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .spectrum import Spectrum
+from .steadiness import Periodicity
 
 
 @dataclass(frozen=True)
@@ -51,6 +52,7 @@ class PoincareSet:
     time_s: np.ndarray
     xy_m: np.ndarray  # [k, 2] at the record node
     v_m_s: np.ndarray  # [k, 2]
+    periodicity: Periodicity | None = None  # what the points say (steadiness.poincare_periodicity)
 
 
 @dataclass(frozen=True)
