@@ -56,12 +56,20 @@ def _speed_text(res: TransientResult) -> str:
     return f"{sp[0]:.0f} rpm" if np.ptp(sp) < 1e-9 * max(abs(sp[0]), 1.0) else f"{sp[0]:.0f}-{sp[-1]:.0f} rpm"
 
 
-def _title(res: TransientResult, what: str, operating: str = "", width_in: float | None = None) -> str:
-    """The figure title; on a figure ``width_in`` inches wide the lines are wrapped to fit."""
+def _title(res: TransientResult, what: str, operating: str = "", width_in: float | None = None,
+           resolution: bool = False, settling: bool = True) -> str:
+    """The figure title; it says when the run stopped early, when the steady part has not settled and
+    (``resolution``) when it is too short for the frequencies named.  On a figure ``width_in`` inches
+    wide the lines are wrapped to fit."""
     point = ", ".join(p for p in (_speed_text(res), operating) if p)
     s = f"{what}, node {res.record_node + 1}: {point} ({res.method})"
     if not res.complete:
         s += f"\nINCOMPLETE: {res.reason}"
+    st = res.settling
+    if settling and st is not None and not st.settled:
+        s += "\n" + st.note.replace("not settled:", "NOT SETTLED:", 1)
+    if resolution and st is not None and st.resolution_note:
+        s += "\n" + st.resolution_note.replace("window too short", "WINDOW TOO SHORT", 1)
     if width_in is None:
         return s
     chars = max(30, int(13 * width_in))  # about 13 characters per inch at 9 pt
@@ -141,7 +149,10 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
         te, lo, hi = _envelope(t, (d - mean) / scale, 1.0 / f_rev if f_rev > 0 else 0.0)
         top.fill_between(te, lo, hi, color="tab:blue" if k == 0 else "tab:orange", lw=0.3, alpha=0.7,
                          label="min-max over one revolution" if f_rev > 0 else "min-max envelope")
-        top.axvline(res.settle_s, color="0.4", ls="--", lw=0.8, label=f"steady part from {res.settle_s:.3g} s")
+        settled = res.settling is None or res.settling.settled
+        top.axvline(res.settle_s, color="0.4" if settled else "tab:red", ls="--", lw=0.8,
+                    label=f"steady part from {res.settle_s:.3g} s" + (
+                        "" if res.settling is None else " (settled)" if settled else " (NOT SETTLED)"))
         if not res.complete:
             top.axvline(t[-1], color="tab:red", lw=1.0, label=f"run stopped at {t[-1]:.4g} s")
         top.set_title(f"{lab}, whole run (mean of the steady part {mean * UM:.4g} um)", fontsize=9)
@@ -155,7 +166,7 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
         for ax in (top, bottom):
             ax.grid(True, alpha=0.3)
             ax.yaxis.set_major_locator(MaxNLocator(6))
-    fig.suptitle(_title(res, "Response", operating), fontsize=9)
+    fig.suptitle(_title(res, "Response", operating, 10), fontsize=9)
     return fig
 
 
@@ -226,7 +237,7 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
             _no_data(a, "not enough steady data for a spectrum: the run stopped at "
                         f"{res.time_s[-1] if res.time_s.size else 0.0:.4g} s, the steady part starts at "
                         f"{res.settle_s:.3g} s")
-        fig.suptitle(_title(res, "Spectrum", operating), fontsize=9)
+        fig.suptitle(_title(res, "Spectrum", operating, 10), fontsize=9)
         return fig
     passes = pass_frequencies(res)
     rev = res.frequencies_hz.get("revolution", 0.0)
@@ -240,8 +251,8 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
         sel = (f > 0) & (f <= fmax)
         i = int(np.argmax(np.where(sel, A[:, k], -1.0)))
         a.plot(f[i], A[i, k] / scale, "v", color="k", ms=6, gid=f"dominant:{lab}")
-        a.annotate(f"{f[i]:.1f} Hz, {A[i, k] / scale:.3g} {unit}", (f[i], A[i, k] / scale), xytext=(6, 4),
-                   textcoords="offset points", fontsize=7)
+        a.annotate(f"{f[i]:.5g} +/- {spec.resolution_hz / 2:.2g} Hz, {A[i, k] / scale:.3g} {unit}",
+                   (f[i], A[i, k] / scale), xytext=(6, 4), textcoords="offset points", fontsize=7)
         for c, (name, fr) in zip(_PASS_COLORS, passes.items()):
             n = int(fmax / fr + 1e-9)
             every = max(1, math.ceil(n / 24))
@@ -265,7 +276,7 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
     ax[1].set_xlim(0, fmax)
     ax[1].set_xlabel(f"frequency [Hz] (bin {spec.resolution_hz:.3g} Hz)")
     what = "Spectrum of the steady part" if not note else "Spectrum of the part computed"
-    fig.suptitle(_title(res, what, operating), fontsize=9)
+    fig.suptitle(_title(res, what, operating, 10, resolution=not note), fontsize=9)
     return fig
 
 
@@ -370,7 +381,7 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
     ax[1].set_title(f"{min(V.shape[1], 3)} {element}s, last 2 revolutions", fontsize=9)
     ax[1].legend(fontsize=7, loc="upper right")
     ax[1].grid(True, alpha=0.3)
-    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating), fontsize=9)
+    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating, 10), fontsize=9)
     return fig
 
 
@@ -390,5 +401,5 @@ def run_up_figure(res: TransientResult, peak_rpm: float | None = None, operating
     ax.set_ylabel(f"displacement [{unit}]")
     ax.legend(fontsize=7)
     ax.grid(True, alpha=0.3)
-    ax.set_title(_title(res, "Run-up", operating), fontsize=9)
+    ax.set_title(_title(res, "Run-up", operating, 9, settling=False), fontsize=9)
     return fig

@@ -1,11 +1,13 @@
-"""Periodicity of Poincare sets, on signals whose answer is known in closed form."""
+"""Periodicity of Poincare sets and settling of a steady part, on signals whose answer is known in closed form."""
 
 import math
 
 import numpy as np
 import pytest
 
-from spindlesim.analysis.transient.steadiness import REL_TOL, orbit_scale, poincare_periodicity
+from spindlesim.analysis.transient.spectrum import amplitude_spectrum
+from spindlesim.analysis.transient.steadiness import (REL_TOL, LinearModes, assess_settling, orbit_scale,
+                                                      poincare_periodicity)
 
 A = 2e-7  # 0.2 um orbit radius
 F = 300.0  # Hz: the sampling (revolution) frequency of the Poincare sets
@@ -88,3 +90,99 @@ def test_noise_floor_for_a_rotor_at_rest():
     extent, noise = orbit_scale(pts)
     q = poincare_periodicity(pts, extent, noise)
     assert q.periodic and q.period == 1 and q.tolerance_m == noise > 1e-15
+
+
+# -- settling ------------------------------------------------------------------------------------------
+
+FS = 4000.0
+
+
+def judge(signal, t0=0.1, t1=0.5, **kw):
+    t = np.arange(round(t0 * FS), round(t1 * FS)) / FS
+    xy = signal(t)
+    spec = amplitude_spectrum(xy, FS)
+    return assess_settling(t, xy, FS, spec, settle_s=t0, end_s=t[-1], **kw)
+
+
+def test_steady_sinusoid_is_settled():
+    s = judge(lambda t: 5e-6 + whirl(t, A, 50.0))
+    assert s.settled and s.note.startswith("settled")
+    assert abs(s.envelope_change) < 1e-3 and s.centre_drift < 1e-3
+    assert s.dominant_hz == pytest.approx(50.0) and s.dominant_periods == pytest.approx(20.0)
+    assert s.duration_s == pytest.approx(0.4) and s.resolution_hz == pytest.approx(2.5)
+
+
+def test_decaying_free_vibration_is_not_settled():
+    # x = exp(-zeta w t) sin(w_d t): the second half's RMS is exp(-sigma T/2) of the first's
+    zeta, w = 0.01, 2 * np.pi * 50.0
+    sigma, wd = zeta * w, w * math.sqrt(1 - zeta ** 2)
+    s = judge(lambda t: np.column_stack([np.exp(-sigma * t) * np.sin(wd * t), np.zeros_like(t)]) * A)
+    assert not s.settled and "decays" in s.note
+    assert s.envelope_change == pytest.approx(math.exp(-sigma * 0.2) - 1.0, rel=0.01)
+
+
+def test_growing_whirl_is_not_settled():
+    s = judge(lambda t: whirl(t, A, 80.0) * np.exp(3.0 * t)[:, None])
+    assert not s.settled and "grows" in s.note
+    assert s.envelope_change == pytest.approx(math.exp(3.0 * 0.2) - 1.0, rel=0.01)
+
+
+def test_creeping_centre_is_not_settled():
+    # the orbit centre moves by 0.4 A over the window: 0.2 A between the halves' centres, against the
+    # vibration amplitude sqrt(2) x RMS (x and y together) = sqrt(2) A for a circle of radius A
+    s = judge(lambda t: whirl(t, A, 50.0) + np.column_stack([A * (t - 0.1), np.zeros_like(t)]))
+    assert not s.settled and "centre moves" in s.note
+    assert s.centre_drift == pytest.approx(0.2 / math.sqrt(2.0), rel=0.01)
+
+
+def test_lightly_damped_free_vibration_is_caught_by_the_linear_modes():
+    # zeta = 1e-4: the envelope hardly changes in the window (0.6 %), but the linear mode at 50 Hz keeps
+    # exp(-sigma 0.1 s) = 99.7 % of its start amplitude and carries the largest line: a free vibration
+    zeta, w = 1e-4, 2 * np.pi * 50.0
+    sigma = zeta * w
+
+    def sig(t):
+        return np.column_stack([np.exp(-sigma * t) * np.cos(w * t), np.exp(-sigma * t) * np.sin(w * t)]) * A
+
+    modes = LinearModes(np.array([50.0, 700.0]), np.array([sigma, 500.0]))
+    assert modes.damping_ratio[0] == pytest.approx(zeta, rel=1e-6)
+    assert judge(sig).settled  # without the modes the signal alone looks steady
+    s = judge(sig, modes=modes)
+    assert not s.settled and "free vibration" in s.note
+    assert s.ringing_mode_hz == 50.0 and s.ringing_mode_decay == pytest.approx(math.exp(-sigma * 0.1))
+    # a mode that has decayed (700 Hz, exp(-50) left) or has no line does not count; nor does a
+    # response whose primary Poincare set is periodic
+    assert judge(lambda t: whirl(t, A, 700.0), modes=LinearModes(np.array([50.0]), np.array([sigma]))).settled
+    assert judge(sig, modes=modes, periodic=True).settled
+
+
+def test_short_window_is_flagged_with_its_resolution():
+    # 30 ms of a roller-pass response (266 Hz): bins of 1/T = 33.3 Hz do not resolve the 33.2 Hz cage
+    fs, f_rp, f_cage = 13289.0, 265.8, 33.22
+    t = np.arange(round(0.02 * fs), round(0.05 * fs)) / fs
+    xy = whirl(t, A, f_rp)
+    spec = amplitude_spectrum(xy, fs)
+    s = assess_settling(t, xy, fs, spec, settle_s=0.02, end_s=0.05,
+                        named_hz={"bearing.cage": f_cage, "bearing.roller_pass": f_rp, "revolution": 83.33})
+    assert s.resolution_hz == pytest.approx(fs / t.size) and s.duration_s == pytest.approx(t.size / fs)
+    assert s.resolution_hz == pytest.approx(1 / 0.03, rel=0.01)
+    assert s.unresolved == (("bearing.cage", f_cage),) and not s.resolved
+    assert f"window too short for {fs / t.size:.3g} Hz resolution" in s.resolution_note
+    assert "bearing.cage" in s.resolution_note
+    assert f"{2 / f_cage * 1e3:.3g} ms" in s.resolution_note  # two cage periods resolve it
+    # 5 ms of an interrupted run: 1.3 roller passes, too short to judge at all
+    t = t[: round(0.005 * fs)]
+    short = assess_settling(t, xy[: t.size], fs, amplitude_spectrum(xy[: t.size], fs), settle_s=0.02, end_s=0.025)
+    assert not short.settled and "too short to judge" in short.note
+
+
+def test_speed_ramp_and_missing_steady_part_are_not_settled():
+    assert "run-up" in judge(lambda t: whirl(t, A, 50.0), constant_speed=False).note
+    s = assess_settling(np.zeros(0), np.zeros((0, 2)), FS, amplitude_spectrum(np.zeros((0, 2)), FS), settle_s=0.3,
+                        end_s=0.15)
+    assert not s.settled and "no steady part" in s.note and s.duration_s == 0.0
+
+
+def test_no_vibration_is_settled():
+    s = judge(lambda t: np.full((t.size, 2), 1e-5) + 1e-22 * RNG.standard_normal((t.size, 2)))
+    assert s.settled and "no vibration above the numerical noise" in s.note

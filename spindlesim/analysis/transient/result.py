@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .spectrum import Spectrum
-from .steadiness import Periodicity
+from .steadiness import Periodicity, Settling
 
 
 @dataclass(frozen=True)
@@ -82,6 +82,7 @@ class TransientResult:
     reason: str
     newton_iterations: np.ndarray
     wall_time_s: float
+    settling: Settling | None = None  # has the steady part settled, what its spectrum resolves
 
     def poincare_set(self, name: str) -> PoincareSet:
         for p in self.poincare:
