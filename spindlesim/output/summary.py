@@ -314,23 +314,69 @@ def _transient(f):
     a = g.attrs
     late = t >= t[-1] / 2
     amp = np.max(np.abs(x[late] - x[late].mean(axis=0)), axis=0) if late.any() else np.full(2, np.nan)
+    settled = bool(a["settled"]) if "settled" in a else None
     lines = [f"{t[-1]:.4g} s simulated ({a.get('method', '')}, {int(len(t))} samples); "
-             f"vibration amplitude over the last half x {amp[0] * 1e6:.4g} um, y {amp[1] * 1e6:.4g} um"]
+             f"vibration amplitude over the last half x {amp[0] * 1e6:.4g} um, y {amp[1] * 1e6:.4g} um"
+             + (" (NOT SETTLED: not a steady amplitude)" if settled is False else "")]
     data = {"duration_s": float(t[-1]), "amplitude_m": amp.tolist()}
+    lines += _transient_settling(a, data)
     fr = g["spectrum/frequency_hz"][:] if "spectrum" in g else np.zeros(0)
     if len(fr) > 1:
         A = g["spectrum/amplitude_m"][:]
         k = int(np.argmax(np.max(A, axis=1)[1:])) + 1
-        lines.append(f"  dominant line {fr[k]:.2f} Hz, {np.max(A[k]) * 1e6:.4g} um")
+        df = float(fr[1] - fr[0])
+        lines.append(f"  dominant line {fr[k]:.5g} +/- {df / 2:.2g} Hz, {np.max(A[k]) * 1e6:.4g} um"
+                     + (" (of a response that has NOT SETTLED)" if settled is False else ""))
         data["dominant_hz"] = float(fr[k])
     elif "spectrum" in g:
         lines.append("  no spectrum: not enough steady data")
+    if "poincare" in g and "periodicity" in g["poincare"].attrs:
+        lines.append("  " + _poincare_words(g["poincare"].attrs))
+        data["poincare_periodicity"] = str(g["poincare"].attrs["periodicity"])
     for key in ("roller_pass_frequency_hz", "cage_frequency_hz"):
         if key in a:
             data[key] = float(a[key])
     if "roller_pass_frequency_hz" in a:
         lines.append(f"  roller pass {float(a['roller_pass_frequency_hz']):.2f} Hz, cage {float(a['cage_frequency_hz']):.2f} Hz")
     return lines, data
+
+
+def _transient_settling(a, data: dict) -> list[str]:
+    """What the file says of the steady part: settled or not, and the spectrum's resolution."""
+    if "settling_note" not in a:
+        return []
+    note = str(a["settling_note"]).replace("not settled:", "NOT SETTLED:", 1)
+    head = f"  steady part from {float(a['settle_s']):.4g} s"
+    dur = float(a.get("steady_duration_s", 0.0))
+    if dur > 0 and "frequency_resolution_hz" in a:
+        head += f" ({dur:.4g} s long, spectrum bin {float(a['frequency_resolution_hz']):.3g} Hz)"
+        data["frequency_resolution_hz"] = float(a["frequency_resolution_hz"])
+    data["settled"] = bool(a["settled"])
+    data["steady_duration_s"] = dur
+    unresolved = str(a.get("unresolved_frequencies", ""))
+    data["unresolved_frequencies"] = [u for u in unresolved.split(", ") if u]
+    out = [f"{head}: {note}"]
+    if a.get("resolution_note", ""):
+        out.append("  " + str(a["resolution_note"]).replace("window too short", "WINDOW TOO SHORT", 1))
+    return out
+
+
+def _poincare_words(p) -> str:
+    """The primary Poincare set's periodicity, with its tolerance, from its group's attributes."""
+    label, n = str(p["periodicity"]), int(p.get("classified_points", 0))
+    rel = float(p.get("relative_tolerance", np.nan))
+    tol = f"tolerance {float(p['tolerance_m']):.3g} m" + (f" = {100 * rel:.2g} % of the orbit" if np.isfinite(rel)
+                                                           else "")
+    s = f"Poincare {p.get('sampling', '')}: {label}"
+    if label.startswith("period-"):
+        k = int(p["period"])
+        ext = float(p.get("orbit_extent_m", 0.0))
+        within = (f"all within {100 * float(p['spread_m']) / ext:.2g} % of the orbit size of their mean"
+                  if k == 1 and ext > 0 else f"on {k} places")
+        return s + f" ({n} points, {within}; {tol})"
+    if n:
+        return s + f" ({int(p['distinct_points'])} distinct places among {n} points; {tol})"
+    return s
 
 
 def _chatter(f):

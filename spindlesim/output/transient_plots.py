@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import MaxNLocator
 
 from ..analysis.transient.result import TransientResult
-from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum, distinct_points
+from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum
 from .figures import new_figure
 
 UM = 1e6
@@ -56,12 +56,20 @@ def _speed_text(res: TransientResult) -> str:
     return f"{sp[0]:.0f} rpm" if np.ptp(sp) < 1e-9 * max(abs(sp[0]), 1.0) else f"{sp[0]:.0f}-{sp[-1]:.0f} rpm"
 
 
-def _title(res: TransientResult, what: str, operating: str = "", width_in: float | None = None) -> str:
-    """The figure title; on a figure ``width_in`` inches wide the lines are wrapped to fit."""
+def _title(res: TransientResult, what: str, operating: str = "", width_in: float | None = None,
+           resolution: bool = False, settling: bool = True) -> str:
+    """The figure title; it says when the run stopped early, when the steady part has not settled and
+    (``resolution``) when it is too short for the frequencies named.  On a figure ``width_in`` inches
+    wide the lines are wrapped to fit."""
     point = ", ".join(p for p in (_speed_text(res), operating) if p)
     s = f"{what}, node {res.record_node + 1}: {point} ({res.method})"
     if not res.complete:
         s += f"\nINCOMPLETE: {res.reason}"
+    st = res.settling
+    if settling and st is not None and not st.settled:
+        s += "\n" + st.note.replace("not settled:", "NOT SETTLED:", 1)
+    if resolution and st is not None and st.resolution_note:
+        s += "\n" + st.resolution_note.replace("window too short", "WINDOW TOO SHORT", 1)
     if width_in is None:
         return s
     chars = max(30, int(13 * width_in))  # about 13 characters per inch at 9 pt
@@ -141,7 +149,10 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
         te, lo, hi = _envelope(t, (d - mean) / scale, 1.0 / f_rev if f_rev > 0 else 0.0)
         top.fill_between(te, lo, hi, color="tab:blue" if k == 0 else "tab:orange", lw=0.3, alpha=0.7,
                          label="min-max over one revolution" if f_rev > 0 else "min-max envelope")
-        top.axvline(res.settle_s, color="0.4", ls="--", lw=0.8, label=f"steady part from {res.settle_s:.3g} s")
+        settled = res.settling is None or res.settling.settled
+        top.axvline(res.settle_s, color="0.4" if settled else "tab:red", ls="--", lw=0.8,
+                    label=f"steady part from {res.settle_s:.3g} s" + (
+                        "" if res.settling is None else " (settled)" if settled else " (NOT SETTLED)"))
         if not res.complete:
             top.axvline(t[-1], color="tab:red", lw=1.0, label=f"run stopped at {t[-1]:.4g} s")
         top.set_title(f"{lab}, whole run (mean of the steady part {mean * UM:.4g} um)", fontsize=9)
@@ -155,7 +166,7 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
         for ax in (top, bottom):
             ax.grid(True, alpha=0.3)
             ax.yaxis.set_major_locator(MaxNLocator(6))
-    fig.suptitle(_title(res, "Response", operating), fontsize=9)
+    fig.suptitle(_title(res, "Response", operating, 10), fontsize=9)
     return fig
 
 
@@ -226,7 +237,7 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
             _no_data(a, "not enough steady data for a spectrum: the run stopped at "
                         f"{res.time_s[-1] if res.time_s.size else 0.0:.4g} s, the steady part starts at "
                         f"{res.settle_s:.3g} s")
-        fig.suptitle(_title(res, "Spectrum", operating), fontsize=9)
+        fig.suptitle(_title(res, "Spectrum", operating, 10), fontsize=9)
         return fig
     passes = pass_frequencies(res)
     rev = res.frequencies_hz.get("revolution", 0.0)
@@ -240,8 +251,8 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
         sel = (f > 0) & (f <= fmax)
         i = int(np.argmax(np.where(sel, A[:, k], -1.0)))
         a.plot(f[i], A[i, k] / scale, "v", color="k", ms=6, gid=f"dominant:{lab}")
-        a.annotate(f"{f[i]:.1f} Hz, {A[i, k] / scale:.3g} {unit}", (f[i], A[i, k] / scale), xytext=(6, 4),
-                   textcoords="offset points", fontsize=7)
+        a.annotate(f"{f[i]:.5g} +/- {spec.resolution_hz / 2:.2g} Hz, {A[i, k] / scale:.3g} {unit}",
+                   (f[i], A[i, k] / scale), xytext=(6, 4), textcoords="offset points", fontsize=7)
         for c, (name, fr) in zip(_PASS_COLORS, passes.items()):
             n = int(fmax / fr + 1e-9)
             every = max(1, math.ceil(n / 24))
@@ -265,22 +276,32 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
     ax[1].set_xlim(0, fmax)
     ax[1].set_xlabel(f"frequency [Hz] (bin {spec.resolution_hz:.3g} Hz)")
     what = "Spectrum of the steady part" if not note else "Spectrum of the part computed"
-    fig.suptitle(_title(res, what, operating), fontsize=9)
+    fig.suptitle(_title(res, what, operating, 10, resolution=not note), fontsize=9)
     return fig
 
 
-def period_label(k: int, n: int) -> str:
-    """"period-k" only when the n points visit k places at least twice each."""
-    if 1 <= k <= 8 and n >= 2 * k:
-        return f"period-{k}"
-    if k == n:
-        return f"{n} distinct points" + (" (too few to tell a period)" if n < 16 else " (not periodic)")
-    return f"{k} distinct points of {n} (not periodic)"
+def _points(n: int) -> str:
+    return f"{n} point" + ("" if n == 1 else "s")
+
+
+def _periodicity_text(p) -> str:
+    """A Poincare set's periodicity in words, with its tolerance relative to the orbit."""
+    q = p.periodicity
+    scale, unit = length_unit(q.tolerance_m)
+    tol = f"tolerance {q.tolerance_m / scale:.2g} {unit}"
+    if math.isfinite(q.relative_tolerance):
+        tol += f" ({100 * q.relative_tolerance:.2g} % of the orbit)"
+    if q.kind == "period" and q.period == 1:
+        share = f" ({100 * q.spread_m / q.extent_m:.2g} % of the orbit)" if q.extent_m > 0 else ""
+        return f"all {_points(q.points)} within {q.spread_m / scale:.2g} {unit} of their mean{share}; {tol}"
+    if q.kind == "period":
+        return f"{_points(q.points)} on {q.period} places; {tol}"
+    return f"{_points(q.points)}, {q.distinct} distinct; {tol}"
 
 
 def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
-    """Every Poincare set: x against dx/dt about the steady mean; "period-k" when the points fall on
-    k places (a coincident set is drawn as one point, not as round-off noise)."""
+    """Every Poincare set: x against dx/dt about the steady mean, with what the analysis says of it
+    (period-k, not periodic, too few points; a period-1 set is drawn as one point)."""
     sets = [p for p in res.poincare if p.time_s.size]
     ncol = min(max(len(sets), 1), 3)
     nrow = max(1, math.ceil(len(sets) / ncol))
@@ -297,28 +318,25 @@ def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
     x0, v0 = (float(x_all.mean()), float(v_all.mean())) if x_all.size else (0.0, 0.0)
     xs, xu = length_unit(float(np.ptp(x_all)) if x_all.size else 1e-12)
     vs, vu = length_unit(float(np.ptp(v_all)) if v_all.size else 1e-12)
-    tol = 1e-4 * max(float(np.ptp(x_all)) if x_all.size else 0.0, 1e-15)
     for ax, p in zip(axes, sets):
-        k = distinct_points(p.xy_m, tol)
+        q = p.periodicity
         x, v = (p.xy_m[:, 0] - x0) / xs, (p.v_m_s[:, 0] - v0) / vs
-        if k == 1 and len(x) >= 2:
-            spread = float(np.max(np.abs(p.xy_m - p.xy_m.mean(axis=0))))
+        if q is not None and q.kind == "period" and q.period == 1:
             ax.plot([x.mean()], [v.mean()], "o", ms=9, mfc="none", color="tab:red", gid="period-1")
-            ax.text(0.5, 0.9, f"period-1: all {len(x)} points coincide\n(within {spread * UM:.2g} um)",
-                    transform=ax.transAxes, ha="center", va="top", fontsize=8, color="tab:red")
             hx = max(0.5 * float(np.ptp(x_all)) / xs, 1e-9)
             hv = max(0.5 * float(np.ptp(v_all)) / vs, 1e-9)
             ax.set_xlim(x.mean() - hx, x.mean() + hx)
             ax.set_ylim(v.mean() - hv, v.mean() + hv)
-            label = "period-1"
         else:
             ax.plot(x, v, ".", ms=3)
-            label = period_label(k, len(x))
         for axis in (ax.xaxis, ax.yaxis):
             axis.set_major_locator(MaxNLocator(5))
         ax.set_xlabel(f"x - mean [{xu}]")
         ax.set_ylabel(f"dx/dt - mean [{vu}/s]")
-        ax.set_title(f"once per {p.name} ({p.frequency_hz:.4g} Hz): {label}", fontsize=8)
+        label = "" if q is None else f"period-{q.period}" if q.periodic else q.kind
+        words = "" if q is None else "\n" + textwrap.fill(_periodicity_text(p), 70)
+        ax.set_title(f"once per {p.name} ({p.frequency_hz:.4g} Hz): {label}{words}", fontsize=7.5,
+                     color="tab:red" if q is not None and q.periodic else "black")
         ax.grid(True, alpha=0.3)
     for ax in axes[len(sets):]:
         ax.remove()
@@ -363,7 +381,7 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
     ax[1].set_title(f"{min(V.shape[1], 3)} {element}s, last 2 revolutions", fontsize=9)
     ax[1].legend(fontsize=7, loc="upper right")
     ax[1].grid(True, alpha=0.3)
-    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating), fontsize=9)
+    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating, 10), fontsize=9)
     return fig
 
 
@@ -383,5 +401,5 @@ def run_up_figure(res: TransientResult, peak_rpm: float | None = None, operating
     ax.set_ylabel(f"displacement [{unit}]")
     ax.legend(fontsize=7)
     ax.grid(True, alpha=0.3)
-    ax.set_title(_title(res, "Run-up", operating), fontsize=9)
+    ax.set_title(_title(res, "Run-up", operating, 9, settling=False), fontsize=9)
     return fig

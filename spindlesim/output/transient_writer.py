@@ -10,6 +10,10 @@
     /transient/bearings/<name>/force [t, dofs] and the bearing's other outputs
     /transient/linearized_frequency_hz                                   the linear modes at the static state
 
+Attributes of /transient also say whether the steady part has settled and what its spectrum resolves
+(``steadiness.Settling``); each Poincare group says whether its set is periodic (``Periodicity``).
+Numbers that are not finite are left out (no ringing mode: no ``ringing_mode_hz``).
+
 Dimensions: ``time_s`` (a copy in every bearing group), ``dof`` (x, y), ``rotor_dof`` ("<dof>.<node>",
 node 1-based), ``frequency_hz`` in /transient/spectrum, each Poincare group's own ``time_s``.
 An incomplete run is still written, with complete = False and the reason (root and group).
@@ -66,6 +70,31 @@ def _bearing_datasets(g: str, time_s: np.ndarray, dofs: tuple[str, ...], outs: d
     return data
 
 
+def _finite(attrs: dict) -> dict:
+    """The attributes without the numbers that are not finite (an attribute absent means "none")."""
+    return {k: v for k, v in attrs.items() if isinstance(v, (str, bool)) or np.isfinite(v)}
+
+
+def _periodicity_attrs(p) -> dict:
+    q = p.periodicity
+    if q is None:
+        return {}
+    return _finite({"periodicity": q.label, "period": q.period, "distinct_points": q.distinct,
+                    "classified_points": q.points, "tolerance_m": q.tolerance_m,
+                    "relative_tolerance": q.relative_tolerance, "spread_m": q.spread_m, "orbit_extent_m": q.extent_m})
+
+
+def _settling_attrs(s) -> dict:
+    if s is None:
+        return {}
+    return _finite({"settled": bool(s.settled), "settling_note": s.note, "resolution_note": s.resolution_note,
+                    "steady_duration_s": s.duration_s,
+                    "frequency_resolution_hz": s.resolution_hz, "envelope_change": s.envelope_change,
+                    "centre_drift": s.centre_drift, "dominant_periods": s.dominant_periods,
+                    "ringing_mode_hz": s.ringing_mode_hz, "ringing_mode_decay": s.ringing_mode_decay,
+                    "unresolved_frequencies": ", ".join(k for k, _ in s.unresolved)})
+
+
 def _poincare(g: str, p) -> dict[str, Any]:
     t = ("time_s",)
     return {f"{g}/time_s": (p.time_s, "s", t), f"{g}/x_m": (p.xy_m[:, 0], "m", t), f"{g}/y_m": (p.xy_m[:, 1], "m", t),
@@ -100,10 +129,11 @@ def write_transient(path: Path, run: RunInfo, res: TransientResult, linearized_h
     for i, p in enumerate(res.poincare):
         g = f"/transient/poincare/{p.name}"
         data.update(_poincare(g, p))
-        group_attrs[g] = {"frequency_hz": p.frequency_hz}
+        group_attrs[g] = {"frequency_hz": p.frequency_hz, **_periodicity_attrs(p)}
         if i == 0:  # the primary set also at the top of the group (DESIGN.md section 5)
             data.update(_poincare("/transient/poincare", p))
-            group_attrs["/transient/poincare"] = {"sampling": f"once per {p.name}", "frequency_hz": p.frequency_hz}
+            group_attrs["/transient/poincare"] = {"sampling": f"once per {p.name}", "frequency_hz": p.frequency_hz,
+                                                  **_periodicity_attrs(p)}
     for name, dofs, outs in zip(res.bearing_names, res.bearing_dofs, res.bearing_outputs):
         g = f"/transient/bearings/{name}"
         data.update(_bearing_datasets(g, res.time_s, tuple(dofs), outs))
@@ -114,7 +144,7 @@ def write_transient(path: Path, run: RunInfo, res: TransientResult, linearized_h
     attrs = {"method": res.method, "step_s": res.step_s, "sample_rate_hz": res.sample_rate_hz,
              "record_node": res.record_node + 1, "settle_s": res.settle_s, "complete": res.complete,
              "incomplete_reason": res.reason, "wall_time_s": res.wall_time_s,
-             "dof_names": ", ".join(res.dof_names)}
+             "dof_names": ", ".join(res.dof_names), **_settling_attrs(res.settling)}
     for key, f in res.frequencies_hz.items():
         attrs[f"frequency_hz.{key}"] = f
     rp = [k for k in res.frequencies_hz if k.endswith(".roller_pass")]

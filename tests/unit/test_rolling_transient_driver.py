@@ -49,6 +49,10 @@ def test_sampling_spectrum_and_poincare_of_an_exact_solution(method, kw, tol):
     assert np.allclose(np.diff(p.time_s), 0.02)
     assert distinct_points(p.xy_m, 10 * tol) == 1
     assert p.xy_m[0] == pytest.approx([A, 0.0], abs=tol)
+    # the engine says so: period-1, and settled (the undamped 50 Hz mode rings, but the response is periodic)
+    assert p.periodicity.label == "period-1" and p.periodicity.points == p.time_s.size == 21
+    assert p.periodicity.spread_m <= 2 * tol and p.periodicity.extent_m == pytest.approx(2 * A, rel=1e-3)
+    assert res.settling.settled and "periodic" in res.settling.note
 
 
 @dataclass(frozen=True)
@@ -106,3 +110,65 @@ def test_spectrum_amplitude_and_poincare_times():
     assert sp.amplitude[:, 0].max() == pytest.approx(3.0, rel=1e-9)
     assert sp.dominant_frequency_hz(0) == pytest.approx(100.0)
     assert poincare_times(0.1, 0.2, 0.025) == pytest.approx([0.1, 0.125, 0.15, 0.175, 0.2])
+
+
+def damped_oscillator_rotor(zeta, rpm):
+    K = np.eye(2) * M * W ** 2
+    b = LinearBearing("spring", 0, np.array([0.0]), np.array([K]), np.array([np.eye(2) * 2 * zeta * M * W]))
+    return oscillator_rotor(b, rpm)
+
+
+def test_free_decay_of_a_released_oscillator_is_not_settled():
+    # released from x = A at 0 rpm with zeta = 0.02: x = A exp(-zeta w t) (cos w_d t + ...); the
+    # steady part 0.1-0.5 s is a free vibration whose second half has exp(-zeta w 0.2 s) of the first's RMS
+    zeta = 0.02
+    res = simulate(damped_oscillator_rotor(zeta, 0.0),
+                   TransientSettings(0.5, method="rk4", step_s=1e-4, settle_s=0.1, sample_rate_hz=2000,
+                                     perturbation=Perturbation(0, A * M * W ** 2)))
+    st = res.settling
+    assert not st.settled and "decays" in st.note
+    assert st.envelope_change == pytest.approx(np.exp(-zeta * W * 0.2) - 1.0, rel=0.01)
+    n = int(np.sum(res.time_s >= 0.1 - 1e-12))  # 0.1 s to 0.5 s inclusive
+    assert st.duration_s == pytest.approx(n / 2000) and st.resolution_hz == pytest.approx(2000 / n)
+
+
+def test_undecayed_free_whirl_is_not_settled_and_the_outputs_say_so(tmp_path):
+    # undamped 50 Hz whirl at 290 rpm: once per revolution (4.83 Hz) the point moves on by 10.34 turns
+    # (not periodic), the linear mode at sqrt(k/m) = 50 Hz keeps all of its start amplitude and carries
+    # the largest line.  Steady part 0.2 s: 5 Hz bins, the revolution is within 2 bins of 0 Hz.
+    import h5py
+
+    from spindlesim.output.hdf5 import RunInfo
+    from spindlesim.output.summary import summarize
+    from spindlesim.output.transient_plots import orbit_figure, poincare_figure, spectrum_figure, time_figure
+    from spindlesim.output.transient_writer import write_transient
+    from tests.cli.test_transient_cli import _texts
+
+    res = simulate(oscillator_rotor(rpm=290.0),
+                   TransientSettings(0.4, method="rk4", step_s=1e-4, settle_s=0.2, sample_rate_hz=2000,
+                                     perturbation=Perturbation(0, A * M * W ** 2), initial_velocity=((1, A * W),)))
+    st = res.settling
+    assert not st.settled and "free vibration" in st.note
+    assert st.ringing_mode_hz == pytest.approx(50.0, rel=1e-6) and st.ringing_mode_decay == pytest.approx(1.0)
+    n = int(np.sum(res.time_s >= 0.2 - 1e-12))
+    assert st.resolution_hz == pytest.approx(res.sample_rate_hz / n)  # the rate is rounded to whole revolutions
+    assert st.unresolved == (("revolution", pytest.approx(290 / 60)),)
+    for fig in (time_figure(res), orbit_figure(res), spectrum_figure(res), poincare_figure(res)):
+        assert "NOT SETTLED: the free vibration of the start has not died out" in _texts(fig)
+    short = f"WINDOW TOO SHORT for {st.resolution_hz:.3g} Hz resolution: revolution (4.833 Hz)"
+    assert short in _texts(spectrum_figure(res))
+
+    path = write_transient(tmp_path / "transient.h5", RunInfo("deck", "<test>", "0" * 64), res)
+    with h5py.File(path) as f:
+        a = f["transient"].attrs
+        t = f["transient/time_s"][()]
+        n = int(np.sum(t >= a["settle_s"] - 1e-12))
+        assert not a["settled"] and a["settling_note"] == st.note
+        assert a["frequency_resolution_hz"] == pytest.approx(a["sample_rate_hz"] / n)
+        assert a["steady_duration_s"] == pytest.approx(n / a["sample_rate_hz"])
+        assert a["unresolved_frequencies"] == "revolution" and a["ringing_mode_hz"] == pytest.approx(50.0)
+    (_, lines, data), = summarize([path])
+    text = "\n".join(lines)
+    assert "NOT SETTLED: the free vibration" in text and short in text
+    assert "(NOT SETTLED: not a steady amplitude)" in lines[0] and "has NOT SETTLED" in text
+    assert data["settled"] is False and data["unresolved_frequencies"] == ["revolution"]

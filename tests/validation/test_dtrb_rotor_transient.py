@@ -31,7 +31,8 @@ def _run(deck):
 @pytest.mark.slow
 def test_transient_peaks_match_linearised_natural_frequencies():
     """Free vibration (a released 500 N force at the disk) on top of the unbalance response: the two
-    strongest spectral lines at the DTRB node are the first backward/forward pair of the modal
+    strongest spectral lines at the record node (the ball pair's node 1, the deck's first bearing entry;
+    the DTRB is at node 5) are the first backward/forward pair of the modal
     analysis linearised at the nonlinear static equilibrium, within one FFT bin."""
     deck = _deck(**{"duration_s: 0.5": "duration_s: 0.25"})
     rotor, res = _run(deck)

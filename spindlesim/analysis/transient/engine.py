@@ -14,9 +14,10 @@
    points; the other Poincare sets (revolution, cage, each rolling bearing's roller pass) are
    interpolated between steps.  A run-up samples them at the shaft angles where they fall.
 4. Outputs: the record node's (x, y), every rotor DOF, each bearing's ``outputs()`` (its force
-   and what it adds), the spectrum of the steady part, the Poincare sets.  A run that stops
-   early (interrupt, Newton failure, non-finite state) returns what it computed with
-   ``complete=False`` and the reason.
+   and what it adds), the spectrum of the steady part, the Poincare sets with their periodicity,
+   and whether the steady part has settled (``steadiness``).  A run that stops early (interrupt,
+   Newton failure, non-finite state) returns what it computed with ``complete=False`` and the
+   reason.
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ from . import explicit, ivp, newmark
 from .fixed_step import plan_steps, stability_step_s
 from .result import Plan, PoincareSet, TransientResult
 from .spectrum import Spectrum, amplitude_spectrum
+from .steadiness import LinearModes, assess_settling, linear_modes, orbit_scale, poincare_periodicity
 from .system import Excitation, SpeedProfile, assemble_system
 
 log = logging.getLogger(__name__)
@@ -161,8 +163,28 @@ def simulate(rotor: Rotor, settings: TransientSettings, progress=None) -> Transi
     wall0 = time.perf_counter()
     p = prepare(rotor, settings)
     traj = integrate(p, settings, progress)
-    return _result(rotor, settings, p.system, p.operating, p.start, traj, p.plan, p.ratios, p.primary, p.targets,
-                   p.owner, p.settle_s, time.perf_counter() - wall0)
+    return _result(rotor, settings, p, traj, start_modes(p), time.perf_counter() - wall0)
+
+
+def record_node(rotor: Rotor, settings: TransientSettings) -> int:
+    """The node (0-based) whose x, y are recorded: the settings' record node, else the first bearing's."""
+    if settings.record_node is not None:
+        return settings.record_node
+    return rotor.bearings[0].node if rotor.bearings else 0
+
+
+def start_modes(p: Prepared) -> LinearModes | None:
+    """Modes of the system linearised at the static state the run starts from (the perturbation and
+    the initial velocities excluded), at the start speed; None when they cannot be computed."""
+    system = p.system
+    x = np.concatenate([p.start.q] + list(p.start.internal))
+    try:
+        _, Kt, Ct, _ = system.bearing_forces(x, np.zeros_like(x), 0.0)
+        W = system.profile.start_rad_s
+        return linear_modes(system.M, system.stiffness(W) + Kt, system.damping(W) + Ct)
+    except (np.linalg.LinAlgError, ValueError, ArithmeticError) as exc:
+        log.warning("no linear modes at the start state (settling judged without them): %s", exc)
+        return None
 
 
 def stability_step(system, x0: np.ndarray, v0: np.ndarray) -> float:
@@ -213,12 +235,12 @@ def _poincare_targets(ratios: dict[str, float], profile: SpeedProfile, settle: f
     return t[order], o[order]
 
 
-def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, targets, owner, settle, wall):
+def _result(rotor, settings, p: Prepared, traj, modes: LinearModes | None, wall: float) -> TransientResult:
+    system, st, plan, ratios, primary, targets, owner, settle = (p.system, p.start, p.plan, p.ratios, p.primary,
+                                                                 p.targets, p.owner, p.settle_s)
     dofs = rotor.dofs
     n = dofs.size
-    node = settings.record_node
-    if node is None:
-        node = rotor.bearings[0].node if rotor.bearings else 0
+    node = record_node(rotor, settings)
     ix, iy = dofs.index(node, "x"), dofs.index(node, "y")
     X, V, t = traj.x, traj.v, traj.time_s
     disp = np.column_stack([X[:, ix], X[:, iy]]) if len(t) else np.zeros((0, 2))
@@ -239,6 +261,7 @@ def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, target
     steady = t >= settle - 1e-12
     spec = amplitude_spectrum(disp[steady], plan.sample_rate_hz) if steady.sum() >= 4 else \
         Spectrum(np.zeros(0), np.zeros((0, 2)))
+    extent, noise = orbit_scale(disp[steady])
     sets = []
     reached = traj.poincare_time_s
     names = list(ratios)
@@ -249,15 +272,23 @@ def _result(rotor, settings, system, op, st, traj, plan, ratios, primary, target
         rows = np.minimum(rows, max(len(reached) - 1, 0))
         PX = traj.poincare_x[rows] if len(reached) else np.zeros((0, traj.x.shape[1]))
         PV = traj.poincare_v[rows] if len(reached) else np.zeros((0, traj.x.shape[1]))
-        sets.append(PoincareSet(name, ratios[name] * system.profile.start_rad_s / (2 * math.pi), tj,
-                                np.column_stack([PX[:, ix], PX[:, iy]]) if len(tj) else np.zeros((0, 2)),
-                                np.column_stack([PV[:, ix], PV[:, iy]]) if len(tj) else np.zeros((0, 2))))
-    sets.sort(key=lambda p: p.name != primary)  # the primary period first
+        xy = np.column_stack([PX[:, ix], PX[:, iy]]) if len(tj) else np.zeros((0, 2))
+        sets.append(PoincareSet(name, ratios[name] * system.profile.start_rad_s / (2 * math.pi), tj, xy,
+                                np.column_stack([PV[:, ix], PV[:, iy]]) if len(tj) else np.zeros((0, 2)),
+                                poincare_periodicity(xy, extent, noise)))
+    sets.sort(key=lambda q: q.name != primary)  # the primary period first
     freqs = {k: r * system.profile.start_rad_s / (2 * math.pi) for k, r in ratios.items()}
+    constant = system.profile.constant
+    settling = assess_settling(t[steady], disp[steady], plan.sample_rate_hz, spec, settle_s=settle,
+                               end_s=float(t[-1]) if len(t) else 0.0, constant_speed=constant,
+                               periodic=sets[0].periodicity.periodic if sets and sets[0].time_s.size else None,
+                               modes=modes, named_hz=freqs if constant else {})
+    log.info("transient: %s", settling.note)
     return TransientResult(
         method=settings.method, step_s=plan.step_s, sample_rate_hz=plan.sample_rate_hz, time_s=t, speed_rpm=speeds,
         dof_names=dofs.names, record_node=node, displacement_m=disp, velocity_m_s=vel, rotor_displacement=X[:, :n],
         static_displacement=st.q, bearing_names=tuple(b.name for b in system.bearings),
         bearing_dofs=tuple(tuple(b.dof_names) for b in system.bearings), bearing_force_N=forces,
         bearing_outputs=tuple(outputs), frequencies_hz=freqs, settle_s=settle, spectrum=spec, poincare=tuple(sets),
-        complete=traj.complete, reason=traj.reason, newton_iterations=traj.iterations, wall_time_s=wall)
+        complete=traj.complete, reason=traj.reason, newton_iterations=traj.iterations, wall_time_s=wall,
+        settling=settling)

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .spectrum import Spectrum
+from .steadiness import Periodicity, Settling
 
 
 @dataclass(frozen=True)
@@ -51,6 +52,7 @@ class PoincareSet:
     time_s: np.ndarray
     xy_m: np.ndarray  # [k, 2] at the record node
     v_m_s: np.ndarray  # [k, 2]
+    periodicity: Periodicity | None = None  # what the points say (steadiness.poincare_periodicity)
 
 
 @dataclass(frozen=True)
@@ -80,6 +82,7 @@ class TransientResult:
     reason: str
     newton_iterations: np.ndarray
     wall_time_s: float
+    settling: Settling | None = None  # has the steady part settled, what its spectrum resolves
 
     def poincare_set(self, name: str) -> PoincareSet:
         for p in self.poincare:
