@@ -20,6 +20,7 @@ ROOT = Path(spindlesim.__file__).parent
 RANK = {
     "__init__": 0, "fields": 0, "lazy": 0,
     "contact": 1,
+    "thermal": 1.5,  # pure growth and friction functions; the bearings call them
     "bearings": 2, "chatter": 2,
     "deck": 3, "model": 3,
     "fe": 4,
