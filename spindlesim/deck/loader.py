@@ -17,6 +17,7 @@ from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
+from ..bearings.ball import section as ball_section
 from ..fields import unit_range, unit_text
 from .document import bearing_types, deck_model, keys_at
 from .errors import DeckError, DeckIssue
@@ -203,6 +204,11 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
         if b.name in seen:
             bad.append((("bearings", i, "name"), f"duplicate bearing name {b.name!r} (also bearings[{seen[b.name]}])"))
         seen[b.name] = i
+    for i, b in enumerate(d.bearings):
+        if getattr(b, "type", None) == "ball":
+            bad += [(("bearings", i) + path, msg) for path, msg in ball_section.located_checks(b)]
+    if getattr(d, "bearing", None) is not None:
+        bad += [(("bearing",) + path, msg) for path, msg in ball_section.located_checks(d.bearing)]
     for i, load in enumerate(d.loads):
         node_ok(("loads", i, "node"), load.node)
     for sec, keys in (("static", ("stiffness_at",)), ("frf", ("input", "output"))):

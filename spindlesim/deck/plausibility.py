@@ -12,7 +12,9 @@ the user probably meant.
   over 1 % of its inner raceway diameter (micrometres written as millimetres?);
 * a bearing or joint stiffness above 0 and below 1e5 N/m (N/mm or N/um written as N/m?);
 * bearing damping whose ratio to the stiffness, C/K, is above 1 s or below 1e-9 s (a damping
-  given in another unit than N s/m).
+  given in another unit than N s/m);
+* a ball bearing's fit (``fits_um``) above 0 and below 0.1 um in magnitude (millimetres given as
+  micrometres?), a thermal expansion coefficient above 3e-5 1/K (more than any bearing metal).
 """
 
 from __future__ import annotations
@@ -31,6 +33,32 @@ MAX_CLEARANCE_RATIO = 0.01
 MIN_STIFFNESS_N_M = 1e5
 #: damping time constant C/K [s] outside these bounds looks like another unit of damping
 DAMPING_TIME_S = (1e-9, 1.0)
+#: a fit below this magnitude [um] (but not 0) looks like millimetres written under a _um key
+MIN_FIT_UM = 0.1
+#: an expansion coefficient above this [1/K] is beyond the metals of a spindle (aluminium 23e-6)
+MAX_EXPANSION_1_K = 3e-5
+
+
+def _ball_growth(b: Any, where: tuple[Any, ...], bad: Found) -> None:
+    fits = getattr(b, "fits_um", None)
+    if fits is not None:
+        for key in ("shaft", "housing"):
+            v = getattr(fits, key)
+            if 0.0 < abs(v) < MIN_FIT_UM:
+                bad.append((where + ("fits_um", key), f"a fit of {v:g} um is below {MIN_FIT_UM:g} um: was it given "
+                                                      f"in millimetres? ({v:g} mm = {v * 1e3:g} um)"))
+    mats = [("material",), ("ball_material",)]
+    if getattr(b, "mounting", None) is not None:
+        mats += [("mounting", "shaft_material"), ("mounting", "housing_material")]
+    for path in mats:
+        m = b
+        for k in path:
+            m = getattr(m, k, None)
+        e = getattr(m, "thermal_expansion_1_K", None)
+        if e is not None and e > MAX_EXPANSION_1_K:
+            bad.append((where + path + ("thermal_expansion_1_K",),
+                        f"{e:g} 1/K is above {MAX_EXPANSION_1_K:g} 1/K (steel 11.5e-6, aluminium 23e-6): is it "
+                        "the coefficient in 1/K?"))
 
 
 def _rows(rows: list[list[float]], where: tuple[Any, ...], bad: Found) -> None:
@@ -121,6 +149,10 @@ def plausibility_warnings(d: Any) -> Found:
         _rows(d.shaft.elements, ("shaft", "elements"), bad)
     for i, b in enumerate(d.bearings):
         _bearing(b, ("bearings", i), bad)
+        if getattr(b, "type", None) == "ball":
+            _ball_growth(b, ("bearings", i), bad)
+    if getattr(d, "bearing", None) is not None:
+        _ball_growth(d.bearing, ("bearing",), bad)
     tool = getattr(d, "tool", None)
     if tool is not None:
         for name in ("interface", "joint"):

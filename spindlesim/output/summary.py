@@ -419,6 +419,17 @@ def _bearing(f):
                  f"contact angles {g['contact_angle_inner_deg'][()].min():.1f}-{g['contact_angle_inner_deg'][()].max():.1f} deg (inner)")
     data = {"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Q.max()),
             "max_pressure_Pa": float(p.max())}
+    if "operating_clearance_m" in g:
+        c, dc = float(g["operating_clearance_m"][()]), float(g["clearance_change_m"][()])
+        line = f"  at temperature: operating clearance {c * 1e6:.4g} um ({dc * 1e6:+.4g} um from growth)"
+        if "preload_N" in g:
+            pre = g["preload_N"][()]
+            line += f", preload {', '.join(f'{v:.4g}' for v in pre)} N per row (no external load)"
+        lost = [s for s in ("inner", "outer") if int(a.get(f"{s}_fit_lost", 0))]
+        if lost:
+            line += "; FIT LOST: " + ", ".join(f"{s} ring" for s in lost)
+        lines.append(line)
+        data.update(operating_clearance_m=c, clearance_change_m=dc)
     if "life_L10_Mrev" in g:
         L = float(g["life_L10_Mrev"][()])
         speed = float(a.get("speed_rpm", 0.0))

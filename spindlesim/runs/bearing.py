@@ -11,6 +11,9 @@ load and speed), or a ``dtrb:`` section (the DTRB analysis, dtrb.h5).  Layout of
     /bearing/max_pressure_Pa [row, element] (the larger of inner and outer), .._inner_Pa, .._outer_Pa
     /bearing/life_L10_Mrev (ISO 281), /bearing/life_L10r_Mrev (ISO/TS 16281)
     /bearing/sweeps/<preload|load|speed>/...
+    with temperatures_C / fits_um / mounting: /bearing/operating_clearance_m, ..._at_rest_m,
+    /bearing/clearance_change_m, /bearing/preload_offset_m [row], /bearing/preload_offset_change_m [row],
+    /bearing/preload_N [row], /bearing/<inner|outer>_fit_interference_m, /bearing/<inner|outer>_fit_pressure_Pa
 """
 
 from __future__ import annotations
@@ -68,6 +71,40 @@ def _state_datasets(base: str, st) -> dict:
     }
 
 
+def _growth_datasets(base: str, b, speed: float) -> tuple[dict, dict]:
+    """What the bearing's temperatures and fits made of it (datasets and attributes of ``base``)."""
+    gr = b.growth
+    rows = b.geometry.rows
+    grow = 0.0 if b.speed_growth is None else float(b.speed_growth(speed))
+    data = {
+        f"{base}/operating_clearance_m": Data(
+            np.array(gr.clearance_m - 2.0 * grow), "m", (),
+            "diametral clearance at the deck's temperatures, fits and speed (< 0: interference)"),
+        f"{base}/operating_clearance_at_rest_m": Data(np.array(gr.clearance_m), "m", (),
+                                                      "diametral clearance at the deck's temperatures and fits, at rest"),
+        f"{base}/clearance_change_m": Data(np.array(gr.clearance_change_m - 2.0 * grow), "m", (),
+                                           "operating clearance minus the clearance as made (deck value)"),
+        f"{base}/preload_offset_m": Data(b.preload.row_offsets(rows), "m", ("row",),
+                                         "axial groove-centre offset c_k of each row at temperature (position preload)"),
+        f"{base}/preload_offset_change_m": Data(np.asarray(gr.row_offset_change_m, float), "m", ("row",),
+                                                "change of c_k from growth (> 0: more preload)"),
+    }
+    if b.preload.kind != "spring":  # a spring sets the preload force whatever the growth
+        data[f"{base}/preload_N"] = Data(np.asarray(b.state(np.zeros(5), speed).row_axial_load_N, float), "N",
+                                         ("row",), "thrust each row carries with no external load, at the deck's "
+                                         "temperatures, fits and speed")
+    fits = {}
+    for side, fit in (("inner", gr.rings.inner_fit), ("outer", gr.rings.outer_fit)):
+        if fit is not None:
+            if side == "inner" and b.speed_growth is not None:
+                fit = b.speed_growth.fit(speed)
+            data[f"{base}/{side}_fit_interference_m"] = Data(np.array(fit.interference_m), "m", (),
+                                                             "effective diametral interference (<= 0: fit lost)")
+            data[f"{base}/{side}_fit_pressure_Pa"] = Data(np.array(fit.pressure_Pa), "Pa", ())
+            fits[f"{side}_fit_lost"] = int(fit.lost)
+    return data, fits
+
+
 def _sweep_datasets(base: str, sw) -> dict:
     unit = {"speed_rpm": "rpm", "fx_N": "N", "fy_N": "N", "fz_N": "N", "mx_Nm": "N m", "my_Nm": "N m"}
     n = sw.name
@@ -115,6 +152,13 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
                           "balls": g.balls, "speed_rpm": res.speed_rad_s * 30 / math.pi,
                           "preload": res.bearing.preload.label(), "model": res.bearing.model,
                           "operating_point": res.title()}}
+    if res.bearing.growth is not None:
+        more, flags = _growth_datasets("/bearing", res.bearing, res.speed_rad_s)
+        data.update(more)
+        t = d.bearing.temperatures_C
+        attrs["/bearing"].update(flags)
+        if t is not None:
+            attrs["/bearing"].update({f"temperature_{k}_C": float(v) for k, v in t.model_dump().items() if v is not None})
     paths = [write_h5(outdir / "bearing.h5", run_info, data, attrs)]
     if plots_wanted(opts):
         paths += [save_figure(fig, outdir / f"{name}.png") for name, fig in figures(res).items()]

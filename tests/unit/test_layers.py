@@ -20,8 +20,9 @@ ROOT = Path(spindlesim.__file__).parent
 RANK = {
     "__init__": 0, "fields": 0, "lazy": 0,
     "contact": 1,
+    "thermal": 1.5,  # heat transfer, heat generation, growth: pure physics the bearings and analyses call
     "bearings": 2, "chatter": 2,
-    "deck": 3, "model": 3, "thermal": 3,
+    "deck": 3, "model": 3,
     "fe": 4,
     "analysis": 5,
     "output": 6,

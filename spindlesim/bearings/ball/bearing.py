@@ -71,9 +71,26 @@ class Preload:
     axial_m: float = 0.0
     axial_N: float = 0.0
     floating_side: int = 1
+    #: position preload only: per-row axial offsets [m] added to axial_m / 2 (thermal growth of the rings,
+    #: spindlesim.thermal.growth_bearings); None = none
+    row_offsets_m: tuple[float, ...] | None = None
+
+    def row_offsets(self, rows: int) -> np.ndarray:
+        """Axial groove-centre offset c_k of each row [m] (0 unless position-preloaded)."""
+        if self.kind != "position":
+            return np.zeros(rows)
+        c = np.full(rows, 0.5 * self.axial_m)
+        if self.row_offsets_m is not None:
+            if len(self.row_offsets_m) != rows:
+                raise ValueError(f"row_offsets_m has {len(self.row_offsets_m)} entries for {rows} rows")
+            c = c + np.asarray(self.row_offsets_m, float)
+        return c
 
     def label(self) -> str:
         if self.kind == "position":
+            if self.row_offsets_m is not None:
+                extra = 2e6 * float(np.mean(self.row_offsets_m))
+                return f"position preload {self.axial_m * 1e6:.3g} um, axial offset from growth {extra:+.3g} um"
             return f"position preload {self.axial_m * 1e6:.3g} um"
         if self.kind == "spring":
             return f"spring preload {self.axial_N:.4g} N"
@@ -108,7 +125,8 @@ class BallBearing(BearingBase):
     internal_mass = np.zeros(0)
 
     def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
-                 model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4):
+                 model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4,
+                 speed_growth=None, growth=None):
         if model not in MODELS:
             raise ValueError(f"model must be one of {MODELS}, not {model!r}")
         if preload.kind not in ("none", "position", "spring"):
@@ -129,6 +147,11 @@ class BallBearing(BearingBase):
         self.model = model
         self.rating = rating
         self.pitch_samples = int(pitch_samples)
+        #: callable speed [rad/s] -> radial growth of the inner groove centre beyond rest [m] (None: rings rigid
+        #: against speed); ``growth``: what the bearing's temperatures and fits changed (reporting only)
+        self.speed_growth = speed_growth
+        self.growth = growth
+        self._grown_p: tuple[float, np.ndarray] | None = None
         g = geometry
         D, dm = g.ball_diameter_m, g.pitch_diameter_m
         p = np.zeros(kn.N_PARAMS)
@@ -150,7 +173,7 @@ class BallBearing(BearingBase):
         self._p = p
         self._row_sign = np.ascontiguousarray(s, dtype=np.int64)
         self._row_zc = g.row_z_m + s * g.inner_centre_offset_m
-        self._row_offset = np.full(g.rows, 0.5 * preload.axial_m if preload.kind == "position" else 0.0)
+        self._row_offset = preload.row_offsets(g.rows)
         end = int(np.argmax(g.row_z_m) if preload.floating_side > 0 else np.argmin(g.row_z_m))
         self._s_float = int(s[end])
         self._floating = (s == s[end]) if preload.kind == "spring" else np.zeros(g.rows, bool)
@@ -177,7 +200,7 @@ class BallBearing(BearingBase):
 
     def _copy(self, **kw) -> "BallBearing":
         args = dict(preload=self.preload, name=self.name, node=self.node, model=self.model, rating=self.rating,
-                    pitch_samples=self.pitch_samples)
+                    pitch_samples=self.pitch_samples, speed_growth=self.speed_growth, growth=self.growth)
         args.update(kw)
         return BallBearing(self.geometry, **args)
 
@@ -192,13 +215,23 @@ class BallBearing(BearingBase):
         return f
 
     # ---- evaluation ---------------------------------------------------------------------------
+    def _params(self, om: float) -> np.ndarray:
+        """The kernel parameters at the speed om: A_r grown by ``speed_growth`` (cached per speed)."""
+        if self.speed_growth is None or om == 0.0:
+            return self._p
+        if self._grown_p is None or self._grown_p[0] != om:
+            p = self._p.copy()
+            p[kn.A_RAD0] += float(self.speed_growth(om))
+            self._grown_p = (om, p)
+        return self._grown_p[1]
+
     def _rows(self, q: np.ndarray, om: float, phi: float, w: np.ndarray, idx: np.ndarray) -> _RowEval:
         g = self.geometry
         n, Z = idx.size, g.balls
         X = np.ascontiguousarray(self._X[idx])
         f_rows, K_rows = np.empty((n, 5)), np.empty((n, 5, 5))
         out = [np.empty((n, Z)) for _ in range(7)]
-        status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._p,
+        status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
                                   self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
                                   np.ascontiguousarray(w[idx], dtype=float), Z, X, f_rows, K_rows, *out)
         if status >= 0:

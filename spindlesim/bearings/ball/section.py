@@ -25,6 +25,10 @@ Rotor deck entry (``bearings:`` list), 5 DOF at its node::
       model: outer_race_control        # or full
       dynamic_load_rating_N: null      # catalogue C of ONE bearing; null: ISO 281 from geometry
       reliability_percent: 90.0        # L_n = a_1 L_10
+      # optional, the bearing at temperature (docs/deck-format.md); materials take thermal_expansion_1_K
+      temperatures_C: {inner_ring: 40, outer_ring: 30, rolling_elements: 35, reference: 20}
+      fits_um: {shaft: 3.0, housing: -2.0}                      # diametral; needs mounting
+      mounting: {bore_mm: 70, outer_diameter_mm: 110, shaft_bore_mm: 30}
 
 ``preload``: ``position`` - ``axial_um`` is the total axial approach clamping imposes on the set
 beyond first contact (catalogue preload offset), half of it taken by each opposed group; needs
@@ -61,10 +65,111 @@ LoadComponent = Literal["fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm"]
 LOAD_COMPONENTS = ("fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm")
 
 
+#: coefficient of thermal expansion [1/K]: bearing steel (100Cr6 / AISI 52100, 11-12.5e-6) and
+#: silicon nitride (about 3.2e-6); the default of a ball material below 5000 kg/m3 is the ceramic's
+STEEL_EXPANSION_1_K = 11.5e-6
+CERAMIC_EXPANSION_1_K = 3.2e-6
+CERAMIC_DENSITY_BELOW_KG_M3 = 5000.0
+#: largest interference (or clearance) of a fit, as a fraction of its diameter: above it the ring would be
+#: strained beyond yield (about 0.2-0.5 % for hardened steel), so the number is almost surely in the wrong unit
+MAX_FIT_FRACTION = 0.005
+#: absolute zero [C]
+ABSOLUTE_ZERO_C = -273.15
+
+Expansion = Annotated[float, Field(ge=-1.0, le=1e-3)]  # sign checked below, with the reason
+TemperatureC = Annotated[float, Field(ge=-1e4, le=2000.0)]  # absolute zero checked below, with the reason
+
+
+def _check_expansion(value: float | None, key: str) -> None:
+    if value is not None and not value >= 0.0:
+        raise ValueError(f"{key} = {value:g} is negative: a thermal expansion coefficient in 1/K is positive "
+                         f"(bearing steel about 11.5e-6, Si3N4 about 3.2e-6)")
+
+
 class BallMaterial(DeckModel):
     E_GPa: PositiveFloat = 208.0
     poisson: Annotated[float, Field(gt=-1.0, lt=0.5)] = 0.3
     density_kg_m3: PositiveFloat = 7850.0
+    thermal_expansion_1_K: Optional[Expansion] = None  # default: bearing steel's, or Si3N4's below 5000 kg/m3
+
+    @model_validator(mode="after")
+    def _expansion(self):
+        _check_expansion(self.thermal_expansion_1_K, "thermal_expansion_1_K")
+        return self
+
+    def expansion_1_K(self) -> float:
+        if self.thermal_expansion_1_K is not None:
+            return self.thermal_expansion_1_K
+        return CERAMIC_EXPANSION_1_K if self.density_kg_m3 < CERAMIC_DENSITY_BELOW_KG_M3 else STEEL_EXPANSION_1_K
+
+
+class MountMaterial(DeckModel):
+    """Shaft or housing body of a fit."""
+
+    E_GPa: PositiveFloat
+    poisson: Annotated[float, Field(gt=-1.0, lt=0.5)]
+    density_kg_m3: PositiveFloat
+    thermal_expansion_1_K: Expansion
+
+    @model_validator(mode="after")
+    def _expansion(self):
+        _check_expansion(self.thermal_expansion_1_K, "thermal_expansion_1_K")
+        return self
+
+
+#: steel shaft; grey cast iron housing (E 110 GPa, 10-11e-6 1/K)
+STEEL_SHAFT = dict(E_GPa=208.0, poisson=0.3, density_kg_m3=7850.0, thermal_expansion_1_K=11.5e-6)
+CAST_IRON_HOUSING = dict(E_GPa=110.0, poisson=0.26, density_kg_m3=7200.0, thermal_expansion_1_K=10.5e-6)
+
+
+class BallTemperatures(DeckModel):
+    """Prescribed uniform temperatures of the parts [C] (as in MESYS): the bearing is computed with the
+    operating clearance and preload that its growth gives.  shaft / housing default to the rings'."""
+
+    inner_ring: TemperatureC
+    outer_ring: TemperatureC
+    rolling_elements: TemperatureC
+    reference: TemperatureC = 20.0
+    shaft: Optional[TemperatureC] = None
+    housing: Optional[TemperatureC] = None
+
+    @model_validator(mode="after")
+    def _above_absolute_zero(self):
+        for key in ("inner_ring", "outer_ring", "rolling_elements", "reference", "shaft", "housing"):
+            v = getattr(self, key)
+            if v is not None and not v > ABSOLUTE_ZERO_C:
+                raise ValueError(f"{key} = {v:g} C is at or below absolute zero (-273.15 C)")
+        return self
+
+
+class BallFits(DeckModel):
+    """Diametral interference (> 0) or clearance (< 0) of the ring seats at the reference temperature [um]."""
+
+    shaft: Annotated[float, Field(ge=-1e5, le=1e5)] = 0.0
+    housing: Annotated[float, Field(ge=-1e5, le=1e5)] = 0.0
+
+
+class BallMounting(DeckModel):
+    """Seats of the fits (needed with ``fits_um``): bearing bore and outside diameter, shaft bore,
+    housing outer diameter (null: a housing much thicker than the ring) and the two bodies."""
+
+    bore_mm: PositiveFloat
+    outer_diameter_mm: PositiveFloat
+    shaft_bore_mm: NonNegFloat = 0.0
+    housing_outer_diameter_mm: Optional[PositiveFloat] = None
+    shaft_material: MountMaterial = MountMaterial(**STEEL_SHAFT)
+    housing_material: MountMaterial = MountMaterial(**CAST_IRON_HOUSING)
+
+    @model_validator(mode="after")
+    def _diameters(self):
+        if not self.shaft_bore_mm < self.bore_mm:
+            raise ValueError(f"shaft_bore_mm {self.shaft_bore_mm} must be smaller than bore_mm {self.bore_mm}")
+        if not self.outer_diameter_mm > self.bore_mm:
+            raise ValueError(f"outer_diameter_mm {self.outer_diameter_mm} must exceed bore_mm {self.bore_mm}")
+        h = self.housing_outer_diameter_mm
+        if h is not None and not h > self.outer_diameter_mm:
+            raise ValueError(f"housing_outer_diameter_mm {h} must exceed outer_diameter_mm {self.outer_diameter_mm}")
+        return self
 
 
 class PositionPreload(DeckModel):
@@ -106,6 +211,9 @@ class _BallKeys(DeckModel):
     model: Literal["outer_race_control", "full"] = "outer_race_control"
     dynamic_load_rating_N: Optional[PositiveFloat] = None
     reliability_percent: Annotated[float, Field(ge=90.0, le=99.95)] = 90.0
+    temperatures_C: Optional[BallTemperatures] = None
+    fits_um: Optional[BallFits] = None
+    mounting: Optional[BallMounting] = None
 
     @property
     def row_count(self) -> int:
@@ -246,13 +354,106 @@ def preload_unit_to_si(entry: _BallKeys, value: float) -> float:
     return 1e-6 * value if isinstance(entry.preload, PositionPreload) else float(value)
 
 
+def located_checks(entry: _BallKeys) -> list[tuple[tuple, str]]:
+    """Checks of the growth keys that pydantic cannot place on their key: (key path in the entry, message).
+    The deck loader reports them located; with temperatures the bearing at temperature is built once."""
+    bad: list[tuple[tuple, str]] = []
+    if entry.fits_um is not None and entry.mounting is None:
+        bad.append((("fits_um",), "fits_um needs mounting: {bore_mm, outer_diameter_mm} (the seat diameters), and "
+                                  "optionally shaft_bore_mm, housing_outer_diameter_mm and the two materials"))
+    m = entry.mounting
+    if entry.fits_um is not None and m is not None:
+        for key, value, dia in (("shaft", entry.fits_um.shaft, m.bore_mm),
+                                ("housing", entry.fits_um.housing, m.outer_diameter_mm)):
+            if abs(value) > MAX_FIT_FRACTION * dia * 1e3:
+                bad.append((("fits_um", key), f"{value:g} um is {abs(value) / (dia * 1e3) * 100:.3g} % of the {dia:g} mm "
+                                              f"seat (more than {MAX_FIT_FRACTION * 100:g} %: a hardened ring would "
+                                              "yield); fits are diametral interferences in micrometres"))
+    if m is not None:
+        dm, D = entry.pitch_diameter_mm, entry.ball_diameter_mm
+        if not m.bore_mm < dm - D:
+            bad.append((("mounting", "bore_mm"), f"{m.bore_mm:g} mm must be below the inner raceway (about pitch "
+                                                 f"diameter - ball diameter = {dm - D:g} mm)"))
+        if not m.outer_diameter_mm > dm + D:
+            bad.append((("mounting", "outer_diameter_mm"), f"{m.outer_diameter_mm:g} mm must exceed the outer raceway "
+                                                           f"(about pitch diameter + ball diameter = {dm + D:g} mm)"))
+    if bad or thermal_inputs(entry) is None:
+        return bad
+    from .growth import at_temperature
+
+    temps, ring, ball, mounting = thermal_inputs(entry)
+    try:
+        at_temperature(geometry_from(entry), preload_from(entry), temps, ring, ball, mounting)
+    except ValueError as exc:
+        key = "temperatures_C" if entry.temperatures_C is not None else "fits_um"
+        bad.append(((key,), str(exc)))
+    return bad
+
+
+def thermal_inputs(entry: _BallKeys):
+    """(temperatures, ring, ball, mounting) in SI for :func:`~.growth.at_temperature`, or None when the
+    entry has none of temperatures_C, fits_um, mounting (the bearing as made, at the reference state)."""
+    if entry.temperatures_C is None and entry.fits_um is None and entry.mounting is None:
+        return None
+    from ...thermal.growth import ThermoElastic
+    from ...thermal.growth_bearings import BearingTemperatures, Mounting
+
+    def thermo(m, expansion):
+        return ThermoElastic(1e9 * m.E_GPa, m.poisson, m.density_kg_m3, expansion)
+
+    t = entry.temperatures_C
+    if t is None:
+        temps = BearingTemperatures.uniform(20.0)
+    else:
+        temps = BearingTemperatures(t.inner_ring, t.outer_ring, t.rolling_elements, t.reference, t.shaft, t.housing)
+    ring = thermo(entry.material, entry.material.expansion_1_K())
+    bm = entry.material if entry.ball_material is None else entry.ball_material
+    ball = thermo(bm, bm.expansion_1_K())
+    mounting = None
+    if entry.mounting is not None:
+        m, f = entry.mounting, entry.fits_um if entry.fits_um is not None else BallFits()
+        mounting = Mounting(
+            bore_m=1e-3 * m.bore_mm, outer_diameter_m=1e-3 * m.outer_diameter_mm,
+            shaft_interference_m=1e-6 * f.shaft, housing_interference_m=1e-6 * f.housing,
+            shaft_bore_m=1e-3 * m.shaft_bore_mm,
+            housing_outer_diameter_m=math.inf if m.housing_outer_diameter_mm is None else 1e-3 * m.housing_outer_diameter_mm,
+            shaft=thermo(m.shaft_material, m.shaft_material.thermal_expansion_1_K),
+            housing=thermo(m.housing_material, m.housing_material.thermal_expansion_1_K))
+    return temps, ring, ball, mounting
+
+
 def build(entry: _BallKeys):
-    """Deck entry or section (deck units) -> :class:`~.bearing.BallBearing` (SI, 0-based node)."""
+    """Deck entry or section (deck units) -> :class:`~.bearing.BallBearing` (SI, 0-based node).
+
+    With temperatures_C (or fits_um / mounting) the bearing is the one at those temperatures: a new
+    frozen geometry with the operating clearance and the preload offsets its growth gives
+    (:func:`~.growth.at_temperature`); with ``mounting`` the inner ring's centrifugal growth on the shaft
+    is added at every speed.  ``bearing.growth`` keeps what changed (None without these keys)."""
+    import logging
+
     from .bearing import BallBearing
     from .rating import RatingInputs
 
+    geometry, preload = geometry_from(entry), preload_from(entry)
+    growth = speed_growth = None
+    thermal = thermal_inputs(entry)
+    if thermal is not None:
+        from .growth import SpeedGrowth, at_temperature
+
+        temps, ring, ball, mounting = thermal
+        made = geometry
+        try:
+            geometry, preload, growth = at_temperature(made, preload, temps, ring, ball, mounting)
+        except ValueError as exc:
+            raise ValueError(f"bearing {entry.name!r}: {exc}") from exc
+        if mounting is not None:
+            speed_growth = SpeedGrowth(made, temps, ring, mounting)
+        logging.getLogger(__name__).info(
+            "bearing %r at %s: operating clearance %.4g um (%+.4g um), preload offset change %+.4g um",
+            entry.name, "temperature" if entry.temperatures_C is not None else "its fits", growth.clearance_m * 1e6,
+            growth.clearance_change_m * 1e6, growth.preload_offset_change_m * 1e6)
     return BallBearing(
-        geometry_from(entry), preload_from(entry), name=entry.name, node=getattr(entry, "node", 1) - 1,
-        model=entry.model,
+        geometry, preload, name=entry.name, node=getattr(entry, "node", 1) - 1, model=entry.model,
         rating=RatingInputs(dynamic_load_rating_N=entry.dynamic_load_rating_N,
-                            reliability_percent=entry.reliability_percent))
+                            reliability_percent=entry.reliability_percent),
+        speed_growth=speed_growth, growth=growth)
