@@ -163,12 +163,12 @@ class RunReport:
         """Write ``report.html`` into the output folder (temporary file, then rename); returns its path."""
         page = render(self)
         path = self.outdir / REPORT_NAME
-        write_text_atomic(path, page)
+        _write_text_atomic(path, page)
         log.info("wrote %s (%d kB)", path, len(page.encode()) // 1024)
         return path
 
 
-def write_text_atomic(path: Path, text: str) -> Path:
+def _write_text_atomic(path: Path, text: str) -> Path:
     """``text`` as UTF-8 to ``path`` through a temporary file renamed into place (hdf5.publish)."""
     from .hdf5 import publish
 
@@ -320,6 +320,12 @@ def _cls(status: str) -> str:
     return {DONE: "ok", INCOMPLETE: "warn"}.get(status, "bad")
 
 
+def _warning_row(w: LoggedWarning) -> str:
+    level = f"<strong class=\"bad\">{e(w.level)}</strong> " if w.level not in ("WARNING", "") else ""
+    count = f" <span class=\"count\">({w.count} times)</span>" if w.count > 1 else ""
+    return f"<tr><td>{e(w.analysis or '-')}</td><td>{e(w.source)}</td><td>{level}{e(w.message)}{count}</td></tr>"
+
+
 def _problems(outcomes: list[Outcome], warnings: list[LoggedWarning]) -> str:
     failed = [o for o in outcomes if o.status in (FAILED, INTERRUPTED, INCOMPLETE)]
     out = []
@@ -329,9 +335,7 @@ def _problems(outcomes: list[Outcome], warnings: list[LoggedWarning]) -> str:
         out.append("<section id=\"failures\"><h2>Failures</h2><p>The run went on after each failure; a failed "
                    f"analysis wrote no file.</p><ul class=\"failures\">{items}</ul></section>")
     if warnings:
-        rows = "".join(f"<tr><td>{e(w.analysis or '-')}</td><td>{e(w.source)}</td><td>{e(w.message)}"
-                       + (f" <span class=\"count\">({w.count} times)</span>" if w.count > 1 else "") + "</td></tr>"
-                       for w in warnings)
+        rows = "".join(_warning_row(w) for w in warnings)
         more = "" if len(warnings) < MAX_WARNINGS else f"<p>Only the first {MAX_WARNINGS} distinct warnings are listed.</p>"
         out.append("<section id=\"warnings\"><h2>Warnings</h2><table class=\"grid\"><thead><tr><th>during</th>"
                    f"<th>from</th><th>message</th></tr></thead><tbody>{rows}</tbody></table>{more}</section>")

@@ -143,6 +143,7 @@ def test_warnings_statuses_and_messages_are_collected_and_escaped(run_ok, tmp_pa
             logging.getLogger("spindlesim.runs.probe").warning("speed %s left out", "<0 rpm>")
         report.done("static", [run_ok.out / "static.h5", run_ok.out / "static_deflection.png"])
         logging.getLogger("spindlesim.runs.probe").warning("modal: one more")
+        logging.getLogger("spindlesim.runs.probe").error("modal: worse")
         report.failed("modal", ValueError("K < 0 & <i>no</i>"))
         report.interrupted("frf")
     assert report._handler not in logging.getLogger("spindlesim").handlers
@@ -154,6 +155,7 @@ def test_warnings_statuses_and_messages_are_collected_and_escaped(run_ok, tmp_pa
     assert re.search(r"<td>static</td><td>spindlesim.runs.probe</td><td>speed &lt;0 rpm&gt; left out "
                      r"<span class=\"count\">\(2 times\)</span>", warnings)
     assert "<td>modal</td><td>spindlesim.runs.probe</td><td>modal: one more</td>" in warnings
+    assert "<td><strong class=\"bad\">ERROR</strong> modal: worse</td>" in warnings
     assert "not collected" not in page
     assert "ValueError: K &lt; 0 &amp; &lt;i&gt;no&lt;/i&gt;" in page and "<i>no</i>" not in page
     assert "<td class=\"st bad\">interrupted</td>" in page and "<td class=\"st bad\">not run</td>" in page
