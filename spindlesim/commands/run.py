@@ -9,45 +9,58 @@ from .common import deck_argument, load_or_default, outdir_option, report_option
 @deck_argument
 @outdir_option
 @report_options
-def command(deck, outdir):
+@click.option("--no-report", is_flag=True, help="Do not write report.html (the HDF5 and PNG files only).")
+def command(deck, outdir, no_report):
     """Every analysis the deck lists (key 'analyses'), or static, modal, campbell, frf (and unbalance).
 
-    Prints the written paths and a short summary of each file's key results.  Exit codes: 0 every
-    analysis finished, 1 one failed (the others still run), 2 deck error, 3 one ran but is
-    incomplete (its files are marked complete = False), 130 interrupted (Ctrl-C: the analyses
-    not yet started are not run)."""
+    Prints the written paths and a short summary of each file's key results, and writes report.html
+    into the output folder: one self-contained page (figures embedded) with the provenance, each
+    analysis's key results and figures, failures and warnings, to open in a browser or print.
+    Exit codes: 0 every analysis finished, 1 one failed (the others still run), 2 deck error, 3 one
+    ran but is incomplete (its files are marked complete = False), 130 interrupted (Ctrl-C: the
+    analyses not yet started are not run)."""
     from ..output.drawing import figure_process
 
     with figure_process():  # before numpy is imported (spindlesim/output/drawing.py)
-        _run(deck, outdir)
+        _run(deck, outdir, report=not no_report)
 
 
-def _run(deck, outdir) -> None:
+def _run(deck, outdir, report: bool = True) -> None:
     from ..runs import default_analyses, run_analysis, run_info_for
     from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, IncompleteRun
     from ..deck import DeckError
+    from ..output.report import RunReport
     from .common import print_results, report_deck_error, unit_hint
 
     loaded = load_or_default(deck, "spindle")
     out = resolve_outdir(outdir, loaded)
     names = loaded.deck.analyses or default_analyses(loaded)
+    info = run_info_for(loaded, " ".join(sys.argv))
     written, failed, incomplete = [], [], []
-    for name in names:
-        try:
-            written += run_analysis(name, loaded, out, {}, run=run_info_for(loaded, " ".join(sys.argv)))
-        except DeckError as exc:
-            report_deck_error(exc)
-        except IncompleteRun as exc:  # written, marked complete = False
-            written += exc.paths
-            click.echo(f"spindlesim run: {name}: {exc.reason}; its files are marked complete = False", err=True)
-            if exc.interrupted:
-                _stop(names, name, written)
-            incomplete.append(name)
-        except KeyboardInterrupt:
-            _stop(names, name, written)
-        except (ValueError, ArithmeticError, RuntimeError, OSError) as exc:  # LinAlgError is a ValueError
-            click.echo(f"spindlesim run: {name} failed: {exc}{unit_hint(loaded)}", err=True)
-            failed.append(name)
+    with RunReport(loaded, info, out, names) as book:  # collects the warnings logged meanwhile
+        for name in names:
+            try:
+                paths = run_analysis(name, loaded, out, {}, run=info)
+                written += paths
+                book.done(name, paths)
+            except DeckError as exc:
+                report_deck_error(exc)
+            except IncompleteRun as exc:  # written, marked complete = False
+                written += exc.paths
+                book.incomplete(name, exc.paths, exc.reason)
+                click.echo(f"spindlesim run: {name}: {exc.reason}; its files are marked complete = False", err=True)
+                if exc.interrupted:
+                    _stop(names, name, written, book if report else None)
+                incomplete.append(name)
+            except KeyboardInterrupt:
+                book.interrupted(name)
+                _stop(names, name, written, book if report else None)
+            except (ValueError, ArithmeticError, RuntimeError, OSError) as exc:  # LinAlgError is a ValueError
+                click.echo(f"spindlesim run: {name} failed: {exc}{unit_hint(loaded)}", err=True)
+                book.failed(name, exc)
+                failed.append(name)
+    if report and not _write_report(book, written):
+        failed.append("report")
     print_results(written)
     if failed:
         click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {EXIT_FAILED})", err=True)
@@ -57,8 +70,9 @@ def _run(deck, outdir) -> None:
         sys.exit(EXIT_INCOMPLETE)
 
 
-def _stop(names: list, name: str, written: list) -> None:
-    """Ctrl-C: the analyses after ``name`` are not started; what was written is listed; exit code 130."""
+def _stop(names: list, name: str, written: list, book=None) -> None:
+    """Ctrl-C: the analyses after ``name`` are not started; the report says so; what was written is
+    listed; exit code 130."""
     from ..runs.status import EXIT_INTERRUPTED
     from ..sweep.execution import sigint_ignored
     from .common import print_results
@@ -67,5 +81,18 @@ def _stop(names: list, name: str, written: list) -> None:
     click.echo(f"spindlesim run: interrupted during {name}" + (f"; not run: {', '.join(rest)}" if rest else "")
                + f" (exit code {EXIT_INTERRUPTED})", err=True)
     with sigint_ignored():
+        if book is not None:
+            _write_report(book, written)
         print_results(written)
     sys.exit(EXIT_INTERRUPTED)
+
+
+def _write_report(book, written: list) -> bool:
+    """Write report.html and add it to ``written``; a report that cannot be written is one line on
+    stderr (the results themselves are on disk) and False."""
+    try:
+        written.append(book.write())
+    except Exception as exc:  # noqa: BLE001 - the report must never hide the results
+        click.echo(f"spindlesim run: report.html not written: {type(exc).__name__}: {exc}", err=True)
+        return False
+    return True
