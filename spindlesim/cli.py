@@ -28,7 +28,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "dtrb": ("dtrb", "Double-row tapered roller bearing: load distribution, 5x5 stiffness, preload/load sweeps."),
     "chatter": ("chatter", "Chatter stability lobes from the tool-point FRF (rotor at every speed, tap test or file)."),
     "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
-    "run": ("run", "Every analysis the deck lists."),
+    "run": ("run", "Every analysis the deck lists, or every one it has the sections for (run --help)."),
     "decks": ("decks", "The embedded decks (defaults and examples); `decks show NAME` prints one to start from."),
     "schema": ("schema", "The deck's JSON schema (editor completion and checking)."),
     "sweep": ("sweep", "Parameter study over any deck value (process pool or Dask), resumable."),

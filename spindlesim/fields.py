@@ -10,13 +10,32 @@ Every number is also within a physical range: a key whose name ends in a unit (`
 ``_GPa``, ``_rpm`` ...) is checked against :data:`UNIT_RANGES` (a field validator of
 :class:`DeckModel`, so every section gets it), and a key without a unit has its bounds in its
 own ``Field``.  ``tests/unit/test_deck_limits.py`` walks the schema to keep it that way.
+
+Every key is documented by the docstring written under it (an attribute docstring)::
+
+    balls: Annotated[int, Field(ge=3, le=1000)]
+    '''Number of balls in each row.'''
+
+:class:`DeckJsonSchema` puts these into the JSON schema as the keys' descriptions when a schema is
+generated (``spindlesim schema``), and ``docs/deck-reference.md`` is generated from that schema
+(``spindlesim schema --markdown``); ``tests/unit/test_deck_reference.py`` checks that every key has
+one.  They are read from the source only then, not when the classes are created (pydantic's
+``use_attribute_docstrings`` would read the source of every model at each start: docs/decisions.md).
 """
 
 from __future__ import annotations
 
+import ast
+import inspect
+import logging
+import sys
+from functools import lru_cache
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
+from pydantic.json_schema import GenerateJsonSchema
+
+log = logging.getLogger(__name__)
 
 #: largest magnitude of a number that has no unit (sweep values, range ends; their key's unit applies too)
 ANY_NUMBER = 1e15
@@ -62,8 +81,8 @@ _SUFFIXES = sorted(UNIT_RANGES, key=len, reverse=True)
 
 def unit_text(suffix: str) -> str:
     """``N/m`` for ``_N_m``: the unit of a key suffix as a reader writes it."""
-    special = {"_N_per_m_n": "N/m^n", "_g_mm": "g mm", "_Pa_s": "Pa s", "_J_kgK": "J/(kg K)",
-               "_W_m2K": "W/(m2 K)", "_percent": "%"}
+    special = {"_N_per_m_n": "N/m^n", "_g_mm": "g mm", "_kg_m2": "kg m2", "_hz": "Hz", "_Pa_s": "Pa s",
+               "_J_kgK": "J/(kg K)", "_W_m2K": "W/(m2 K)", "_percent": "%"}
     return special.get(suffix, suffix[1:].replace("_", "/"))
 
 
@@ -95,12 +114,77 @@ def _first_out_of_range(value: Any, lo: float, hi: float, where: str = "") -> tu
     return None
 
 
+@lru_cache(maxsize=None)
+def _module_tree(path: str) -> ast.Module | None:
+    try:
+        with open(path, encoding="utf-8") as f:
+            return ast.parse(f.read(), path)
+    except (OSError, SyntaxError, ValueError) as exc:
+        log.debug("no source for the deck keys' docstrings in %s: %s", path, exc)
+        return None
+
+
+def _class_node(tree: ast.Module, qualname: str) -> ast.ClassDef | None:
+    body: list[ast.stmt] = tree.body
+    node = None
+    for part in qualname.split("."):
+        node = next((n for n in body if isinstance(n, ast.ClassDef) and n.name == part), None)
+        if node is None:
+            return None
+        body = node.body
+    return node
+
+
+@lru_cache(maxsize=None)
+def _own_docstrings(cls: type) -> dict[str, str]:
+    """Docstrings written under the annotated attributes in the body of ``cls`` itself."""
+    module = sys.modules.get(cls.__module__)
+    path = getattr(module, "__file__", None)
+    tree = _module_tree(path) if path else None
+    node = _class_node(tree, cls.__qualname__) if tree is not None else None
+    if node is None:
+        return {}
+    docs = {}
+    for stmt, after in zip(node.body, node.body[1:]):
+        if isinstance(stmt, ast.AnnAssign) and isinstance(stmt.target, ast.Name) and isinstance(after, ast.Expr) \
+                and isinstance(after.value, ast.Constant) and isinstance(after.value.value, str):
+            docs[stmt.target.id] = inspect.cleandoc(after.value.value)
+    return docs
+
+
+def attribute_docstrings(cls: type) -> dict[str, str]:
+    """Key -> the docstring written under it, in ``cls`` or the nearest base class that documents it."""
+    docs: dict[str, str] = {}
+    for base in reversed(cls.__mro__):
+        if isinstance(base, type) and issubclass(base, BaseModel) and base is not BaseModel:
+            docs.update(_own_docstrings(base))
+    return docs
+
+
+class DeckJsonSchema(GenerateJsonSchema):
+    """JSON schema of deck models with each key's attribute docstring as its ``description``."""
+
+    def model_schema(self, schema):  # type: ignore[override]
+        json_schema = super().model_schema(schema)
+        properties = json_schema.get("properties", {})
+        for key, doc in attribute_docstrings(schema["cls"]).items():
+            if key in properties:
+                properties[key]["description"] = doc
+        return json_schema
+
+
 class DeckModel(BaseModel):
     """Base of every deck section: unknown keys rejected, strict types, immutable, finite floats,
     numbers within the physical range of their unit, text at most 4096 characters."""
 
     model_config = ConfigDict(extra="forbid", frozen=True, strict=True, allow_inf_nan=False,
                               str_max_length=4096)
+
+    @classmethod
+    def model_json_schema(cls, *args: Any, **kwargs: Any) -> dict[str, Any]:
+        """pydantic's JSON schema, with the keys' docstrings as their descriptions (:class:`DeckJsonSchema`)."""
+        kwargs.setdefault("schema_generator", DeckJsonSchema)
+        return super().model_json_schema(*args, **kwargs)
 
     @field_validator("*", mode="after")
     @classmethod
@@ -137,18 +221,28 @@ class Range(DeckModel):
     """An evenly spaced range ``{start, stop, count}`` (both ends included); the unit of its key applies."""
 
     start: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
+    """First value of the range, in the unit of the key the range stands under (rpm under `speeds_rpm`, Hz under
+    `frequencies_hz`)."""
     stop: Annotated[float, Field(gt=0, le=ANY_NUMBER)]
+    """Last value, in the same unit; both ends are included. The speed and frequency ranges of the rotor
+    analyses and of `chatter` need it greater than `start`."""
     count: Annotated[int, Field(ge=2, le=RANGE_COUNT_MAX)]
+    """Number of evenly spaced values from `start` to `stop`, both ends included."""
 
 
 class Load5(DeckModel):
     """A load on the five DOFs of a bearing: forces x, y, z [N] and moments about x, y [N m]."""
 
     fx_N: float = 0.0
+    """Force of the shaft on the bearing along x (horizontal)."""
     fy_N: float = 0.0
+    """Force of the shaft on the bearing along y (vertical, up)."""
     fz_N: float = 0.0
+    """Axial force of the shaft on the bearing along z (the shaft axis)."""
     mx_Nm: float = 0.0
+    """Moment of the shaft on the bearing about x (right-hand rule)."""
     my_Nm: float = 0.0
+    """Moment of the shaft on the bearing about y (right-hand rule)."""
 
     def vector(self) -> list[float]:
         return [self.fx_N, self.fy_N, self.fz_N, self.mx_Nm, self.my_Nm]

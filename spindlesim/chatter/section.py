@@ -64,27 +64,40 @@ class ChatterModeEntry(DeckModel):
     """One tap-test mode: H_dd = 1 / (k (1 - r^2 + 2 j zeta r))."""
 
     direction: Literal["x", "y"]
+    """Direction of the mode at the tool point: x or y."""
     frequency_hz: PositiveFloat
+    """Natural frequency f_n."""
     damping_ratio: Annotated[float, Field(gt=0.0, lt=1.0)]
+    """Modal damping ratio zeta (dimensionless)."""
     stiffness_N_m: PositiveFloat
+    """Modal stiffness k: H = 1 / (k (1 - r^2 + 2 j zeta r)), r = f / f_n."""
 
 
 class FrfModes(DeckModel):
     modes: Annotated[list[ChatterModeEntry], Field(min_length=1, max_length=100)]
+    """Tap-test modes of the tool point; the modes of a direction add up in its FRF, x and y uncoupled."""
 
 
 class FrfFileEntry(DeckModel):
     path: Annotated[str, Field(min_length=1)]
+    """File with a measured tool-point FRF; a relative path is taken from the deck's directory."""
     format: Literal["csv", "uff"] = "csv"
+    """csv: frequency_hz and real/imag receptance columns (xx, yy, xy, yx or one direction per file); uff:
+    universal file dataset 58 (receptance, mobility or accelerance)."""
     direction: Optional[Literal["x", "y"]] = None  # single-direction CSV, or one direction of a UFF
+    """x or y: the direction of a single-direction CSV file, or the one direction kept from a UFF file. None:
+    every direction in the file."""
 
 
 class FrfFile(DeckModel):
     file: FrfFileEntry
+    """One measured FRF file."""
 
 
 class FrfFiles(DeckModel):
     files: Annotated[list[FrfFileEntry], Field(min_length=1, max_length=8)]
+    """Several single-direction FRF files (e.g. tap tests in x and in y), summed on the first file's frequencies
+    within the common band."""
 
 
 def _frf_kind(v) -> str | None:
@@ -107,46 +120,95 @@ FrfSource = Annotated[
 
 class SdOptions(DeckModel):
     order: Literal[0, 1] = 1
+    """Order of the semi-discretization: 0 (zeroth order) or 1 (first order, the delayed term interpolated
+    linearly)."""
     steps_per_period: Optional[Annotated[int, Field(ge=4, le=2000)]] = None  # None: from points_per_wave
+    """Time steps per tooth period. None: `points_per_wave` points on a wave at 1.2 times the highest
+    significant mode's frequency, between 30 and 400, rounded up to a multiple of 10."""
     points_per_wave: Annotated[float, Field(ge=4.0, le=200.0)] = 30.0
+    """Points per vibration period at 1.2 times the highest significant mode's frequency, when
+    `steps_per_period` is not given."""
     depth_points: Annotated[int, Field(ge=4, le=2000)] = 40
+    """Number of axial depths of the stability map at each speed."""
     depth_max_mm: Optional[PositiveFloat] = None
+    """Largest axial depth of the stability map. None: 1.25 times the zero-order estimate (the smaller of its
+    largest limit and 3 times its smallest)."""
 
 
 class SimulationPoint(DeckModel):
     speed_rpm: PositiveFloat
+    """Spindle speed of the simulated cut."""
     depth_mm: PositiveFloat
+    """Axial depth of cut of the simulated cut."""
 
 
 class SimulationOptions(DeckModel):
     points: Annotated[list[SimulationPoint], Field(min_length=1, max_length=100)]
+    """Cuts integrated in time (nonlinear, the tool may leave the cut) as a check of the lobes; `spindlesim
+    chatter --simulate RPM DEPTH_MM` adds more."""
     tooth_periods: Annotated[int, Field(ge=20, le=1_000_000)] = 400
+    """Tooth periods integrated for each cut."""
     steps_per_period: Optional[Annotated[int, Field(ge=8, le=100_000)]] = None
+    """Time steps per tooth period. None: an even number, at least 100 and 40 steps per period of the highest
+    significant mode."""
 
 
 class ChatterSection(DeckModel):
+    """What `spindlesim chatter` computes: the stability lobes of a cutting process from the tool-point FRF
+    (the deck rotor's, tap-test modes or measured files), with optional time-domain checks."""
+
     operation: Literal["turning", "boring", "grinding", "milling"]
+    """Cutting process: milling (teeth, immersion, Altintas and Budak) or turning, boring, grinding (one edge;
+    in grinding give the workpiece speed: the delay is its revolution)."""
     speeds_rpm: Range
+    """Spindle speeds of the stability lobes (0 < start < stop)."""
     method: Literal["auto", "oriented_frf", "zero_order", "semi_discretization"] = "auto"
+    """Stability method: auto (milling: semi_discretization below 30 % radial immersion, zero_order above;
+    turning, boring, grinding: oriented_frf), zero_order (milling), oriented_frf (turning, boring, grinding:
+    Tlusty) or semi_discretization (any)."""
     frf: FrfSource = "rotor"
+    """Where the tool-point FRF comes from: rotor (the deck's rotor, at the tool tip when it has a `tool`
+    section, else node 1), {modes: [...]} (tap-test modes), {file: {...}} or {files: [...]} (measured FRFs)."""
     frf_at_each_speed: Optional[bool] = None  # default decided by the rotor coupling
+    """With frf: rotor, true: the rotor's tool-point FRF is computed again at every speed of the diagram
+    (speed-dependent bearings); false: once at `operating.speed_rpm`. None: true when a bearing's stiffness or
+    damping changes over the speed range."""
     feed_direction_deg: Annotated[float, Field(ge=-360.0, le=360.0)] = 0.0
+    """Feed direction in the tool-point x-y frame, from +x towards +y."""
     # turning, boring, grinding
     Ks_N_mm2: Optional[PositiveFloat] = None
+    """Specific cutting force Ks of turning, boring or grinding (force per chip area); required there."""
     force_angle_deg: Optional[Angle90] = None
+    """Angle beta of the cutting force on the workpiece from the feed (chip-thickness) direction, towards +y;
+    required for turning, boring, grinding."""
     feed_per_rev_mm: Optional[PositiveFloat] = None
+    """Feed per revolution (the static chip of the time-domain simulation; turning, boring, grinding). None: 0.1
+    mm."""
     # milling
     Kt_N_mm2: Optional[PositiveFloat] = None
+    """Tangential cutting-force coefficient Kt of milling; required there."""
     Kn_N_mm2: Optional[Annotated[float, Field(ge=0.0)]] = None
+    """Normal (radial) cutting-force coefficient Kn of milling; give it or `Kr` (Kr = Kn / Kt)."""
     Kr: Optional[Annotated[float, Field(ge=0.0, le=10.0)]] = None
+    """Ratio Kr = Kn / Kt of the radial to the tangential cutting force (dimensionless); give it or `Kn_N_mm2`.
+    """
     teeth: Optional[Annotated[int, Field(ge=1, le=200)]] = None
+    """Number of teeth (flutes) of the milling cutter; required for milling."""
     tool_diameter_mm: Optional[PositiveFloat] = None
+    """Diameter of the milling cutter; required for milling."""
     radial_depth_mm: Optional[PositiveFloat] = None
+    """Radial depth of cut (width of engagement) ae; at most the tool diameter; required for milling."""
     mode: Optional[Literal["up", "down"]] = None
+    """up or down milling; required for milling."""
     helix_deg: Optional[Annotated[float, Field(ge=0.0, lt=80.0)]] = None
+    """Helix angle of the cutter, taken into account by semi-discretization and the simulation (axial slices);
+    the zero-order average does not depend on it. None: 0 (straight teeth)."""
     feed_per_tooth_mm: Optional[PositiveFloat] = None
+    """Feed per tooth (the static chip of the time-domain simulation; milling). None: 0.1 mm."""
     semi_discretization: SdOptions = SdOptions()
+    """Settings of the semi-discretization method."""
     simulate: Optional[SimulationOptions] = None
+    """Time-domain simulation of chosen cuts. None: none (unless `--simulate` asks for some)."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "ChatterSection":

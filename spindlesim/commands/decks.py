@@ -1,4 +1,5 @@
-"""``spindlesim decks [show NAME]``: the embedded decks, one line each, or one deck's text to start from."""
+"""``spindlesim decks [show NAME]``: the embedded decks with the commands that use each by default, or one
+deck's text to start from."""
 
 import click
 
@@ -21,13 +22,18 @@ def _title(text: str) -> str:
 @click.group("decks", invoke_without_command=True)
 @click.pass_context
 def command(ctx):
-    """List the embedded decks (the default deck of each command and the examples); `decks show NAME` prints one,
-    e.g. `spindlesim decks show milling_spindle > my_spindle.yaml`."""
+    """List the embedded decks: each one's title and the commands that run it when given no DECK (the others
+    are examples); `decks show NAME` prints one, e.g. `spindlesim decks show milling_spindle > my_spindle.yaml`."""
     if ctx.invoked_subcommand is None:
+        from ..decks import commands_using
+
         decks = _embedded()
         width = max(len(n) for n in decks)
         for name, text in decks.items():
+            users = commands_using(name)
+            use = f"default of: {', '.join(users)}" if users else "example (no command's default)"
             click.echo(f"{name:{width}s}  {_title(text)}")
+            click.echo(f"{'':{width}s}  {use}")
 
 
 @command.command("show")

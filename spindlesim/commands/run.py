@@ -11,7 +11,21 @@ from .common import deck_argument, load_or_default, outdir_option, report_option
 @report_options
 @click.option("--no-report", is_flag=True, help="Do not write report.html (the HDF5 and PNG files only).")
 def command(deck, outdir, no_report):
-    """Every analysis the deck lists (key 'analyses'), or static, modal, campbell, frf (and unbalance).
+    """The analyses the deck lists under 'analyses', in that order; without that list, every analysis the
+    deck has the sections for, in this order:
+
+    \b
+      thermal, coefficients          fluid-film bearings (type three_lobe or plain) and operating
+      static, modal, campbell, frf   a rotor (shaft or journal) and operating
+      unbalance                      a rotor, operating and an unbalance section
+      transient                      a rotor, operating and a rotor_transient section; or a transient section
+      bearing                        a bearing section
+      dtrb                           a dtrb section
+      contact                        a contact section
+      chatter                        a chatter section
+
+    A sweep section is run by `spindlesim sweep`, not here; a deck with nothing to run is a deck error.
+    Without DECK: the embedded deck 'spindle' (`spindlesim decks`).
 
     Prints the written paths and a short summary of each file's key results, and writes report.html
     into the output folder: one self-contained page (figures embedded) with the provenance, each
@@ -33,8 +47,14 @@ def _run(deck, outdir, report: bool = True) -> None:
     from .common import print_results, report_deck_error, unit_hint
 
     loaded = load_or_default(deck, "spindle")
-    out = resolve_outdir(outdir, loaded)
     names = loaded.deck.analyses or default_analyses(loaded)
+    if not names:
+        from ..deck.errors import DeckIssue
+
+        report_deck_error(DeckError([DeckIssue(loaded.source, 1, 1, "analyses", "nothing to run: the deck lists no "
+                                               "analyses and has none of the sections an analysis runs on (see "
+                                               "`spindlesim run --help`)")]))
+    out = resolve_outdir(outdir, loaded)
     info = run_info_for(loaded, " ".join(sys.argv))
     written, failed, incomplete = [], [], []
     with RunReport(loaded, info, out, names) as book:  # collects the warnings logged meanwhile

@@ -32,12 +32,16 @@ MAX_CELLS = 131_072
 
 class ContactMaterial(DeckModel):
     E_GPa: PositiveFloat = 208.0
+    """Young's modulus."""
     poisson: Annotated[float, Field(gt=-1.0, lt=0.5)] = 0.3
+    """Poisson's ratio (dimensionless)."""
 
 
 class ContactGrid(DeckModel):
     nx: GridSize = 64   # cells across the contact (rolling direction)
+    """Cells across the contact (rolling direction); nx x ny at most 131,072."""
     ny: GridSize = 256  # cells along the roller (or the ball's second axis)
+    """Cells along the roller (or along the ball contact's second axis)."""
 
     @model_validator(mode="after")
     def _cells(self) -> "ContactGrid":
@@ -50,33 +54,61 @@ class MostLoadedRoller(DeckModel):
     """Roller load from Stribeck: Q_max = 4.08 F_r / Z (zero clearance, line contact)."""
 
     radial_load_N: PositiveFloat
+    """Radial load F_r of the bearing."""
     rollers: Annotated[int, Field(ge=1, le=1000)]
+    """Number of rollers Z; the most loaded roller then carries Q_max = 4.08 F_r / Z (Stribeck, zero clearance).
+    """
 
 
 class BallContact(DeckModel):
     """Point contact with equivalent radii (a sphere on a flat: both = sphere radius)."""
 
     rx_mm: PositiveFloat
+    """Equivalent radius of the point contact in the rolling direction (a sphere on a flat: the sphere's
+    radius)."""
     ry_mm: Optional[PositiveFloat] = None
+    """Equivalent radius across the rolling direction. None: equal to `rx_mm`."""
 
 
 class ContactSection(DeckModel):
+    """What `spindlesim contact` computes: the pressure of one roller (or ball) on a raceway, frictionless
+    normal contact of elastic half-spaces."""
+
     load_N: Optional[PositiveFloat] = None
+    """Normal load of the roller (or ball) on the raceway. Give this or `most_loaded_roller`, not both."""
     most_loaded_roller: Optional[MostLoadedRoller] = None
+    """The load from a bearing's radial load instead of `load_N`."""
     roller_radius_mm: PositiveFloat = 5.0
+    """Roller radius."""
     roller_length_mm: PositiveFloat = 10.0
+    """Roller length."""
     profile: Literal["straight", "crowned", "logarithmic"] = "crowned"
+    """Roller profile along its axis: straight, crowned (a circular crown of `crown_radius_mm`, seed 001 eq. 1)
+    or logarithmic (Johns-Gohar, sized for `design_load_N`)."""
     crown_radius_mm: Optional[PositiveFloat] = None
+    """Crowning radius of a crowned roller; required by profile crowned."""
     design_load_N: Optional[PositiveFloat] = None  # logarithmic profile (Johns-Gohar)
+    """Load the logarithmic profile is designed for; required by profile logarithmic."""
     end_radius_mm: NonNegFloat = 0.0  # 0 = sharp roller ends
+    """Radius of the rounded roller ends; 0: sharp ends. At most half the roller length."""
     raceway: Literal["inner", "outer", "flat"] = "inner"
+    """inner (convex raceway), outer (concave) or flat."""
     raceway_radius_mm: Optional[PositiveFloat] = None
+    """Raceway radius; required unless the raceway is flat; an outer raceway's must exceed the roller radius."""
     tilt_deg: Annotated[float, Field(ge=-5.0, le=5.0)] = 0.0
+    """Misalignment of the roller; positive loads its +y end."""
     roller_material: ContactMaterial = ContactMaterial()
+    """Material of the roller (bearing steel by default)."""
     raceway_material: ContactMaterial = ContactMaterial()
+    """Material of the raceway (bearing steel by default)."""
     grid: ContactGrid = ContactGrid()
+    """Grid of the contact pressure solution."""
     check_edges: bool = True
+    """true: when a sharp roller end is in contact, solve again with twice the cells along the roller and flag
+    the edge stress (edge_singular)."""
     ball: Optional[BallContact] = None
+    """A point contact with these equivalent radii instead of the roller (checks against Hertz); the roller's
+    profile keys are then not used. None: the roller."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "ContactSection":

@@ -41,20 +41,36 @@ class InternalDamping(DeckModel):
     """Rotating (internal) damping of the shaft material, seed 003 eq. 17."""
 
     viscous_s: NonNegFloat = 0.0  # eta_v: K_B multiplier in C (s)
+    """Viscous internal damping eta_v of the shaft material: the shaft's damping matrix gains eta_v K_B and its
+    stiffness the circulatory term eta_v Omega K_C (seed 003 eq. 17; Omega the spin speed). 0: none."""
     hysteretic: Annotated[float, Field(ge=0, le=2.0)] = 0.0  # eta_h: loss factor
+    """Hysteretic loss factor eta_h of the shaft material (dimensionless): bending stiffness (1 + eta_h)/sqrt(1
+    + eta_h^2) K_B and circulatory term eta_h/sqrt(1 + eta_h^2) K_C (seed 003 eq. 17). 0: none."""
 
 
 class Shaft(DeckModel):
     # one row per element: [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]
     elements: Annotated[list[ShaftRow], Field(min_length=1, max_length=500)]  # deck.limits.MAX_ROTOR_ELEMENTS
+    """One row per Timoshenko beam element, from node 1 along +z; element i joins nodes i and i + 1. Row:
+    [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N], each column in
+    the unit its name gives and checked against that unit's range; outer diameter, length, density, E and G > 0,
+    inner diameter >= 0 and smaller than the outer, Poisson's ratio in (-1, 0.5), axial force positive in
+    tension (it stiffens the shaft)."""
     shear_coefficient: Optional[Annotated[float, Field(gt=0, le=10.0)]] = None  # overrides Cowper's hollow-circle formula
+    """Timoshenko shear coefficient of every element (dimensionless). None: Cowper's formula for a hollow
+    circle, per element from its Poisson's ratio and diameter ratio."""
     internal_damping: InternalDamping = InternalDamping()
+    """Rotating (internal) damping of the shaft material; none by default."""
     start_z_mm: float = 0.0
+    """Axial position z of node 1; the nodes follow at the element lengths."""
 
 
 class ElementRows(DeckModel):
     # rows as the shaft's: [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]
     elements: Annotated[list[ShaftRow], Field(min_length=1, max_length=200)]
+    """One row per element, outwards from where the part is mounted, in the shaft's row layout: [outer_dia_mm,
+    inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N], checked as the shaft's rows.
+    """
 
 
 class ToolJoint(DeckModel):
@@ -62,9 +78,13 @@ class ToolJoint(DeckModel):
     the tool in its holder (shrink fit, collet, Weldon), or the holder on the spindle (HSK, steep taper)."""
 
     translational_N_m: PositiveFloat
+    """Stiffness of the joint's springs in x and in y (one spring per direction between the two nodes)."""
     rotational_Nm_rad: PositiveFloat
+    """Tilt stiffness of the joint about x and about y."""
     translational_Ns_m: NonNegFloat = 0.0
+    """Viscous damping of the joint in x and in y."""
     rotational_Nms_rad: NonNegFloat = 0.0
+    """Viscous damping of the joint's tilt about x and about y."""
 
 
 class ToolSection(DeckModel):
@@ -77,34 +97,60 @@ class ToolSection(DeckModel):
     then tool nodes; the tip is the last node."""
 
     holder_node: NodeNumber = 1
+    """Shaft node the holder is mounted on: the spindle nose, which must be an end of the shaft (node 1 or the
+    last node). The holder and the tool go outwards from it, away from the rest of the shaft."""
     interface: Optional[ToolJoint] = None
+    """Joint between the spindle nose and the holder (HSK, steep taper). None: the holder's first node is the
+    nose node itself (rigid mounting); given: the holder gets a node of its own at the nose, held by this joint.
+    """
     holder: ElementRows
+    """The holder's beam elements from the nose outwards."""
     joint: ToolJoint
+    """Joint between the holder's last node and the tool's first node (shrink fit, collet, Weldon)."""
     tool: ElementRows
+    """The tool's beam elements from the holder outwards; the last node is the tool tip (the default FRF point
+    and the cutting point of `chatter`)."""
 
 
 class Journal(DeckModel):
     """A rigid journal: a rotor of one node with mass and no shaft (seed 000's 2-DOF test rig)."""
 
     mass_kg: PositiveFloat
+    """Mass of the rigid journal: the whole rotor, one node with translations x and y only (no shaft, no tilt,
+    no axial DOF: its point loads take fx_N and fy_N only)."""
     damping_Ns_mm: NonNegFloat = 0.0  # viscous damping of the journal to ground, x and y
+    """Viscous damping of the journal to ground in x and in y (in N s/mm: 1 N s/mm = 1000 N s/m)."""
 
 
 class Disk(DeckModel):
     node: NodeNumber
+    """Node the rigid disk is attached to (1-based)."""
     mass_kg: NonNegFloat
+    """Mass of the disk."""
     Ip_kg_m2: NonNegFloat
+    """Polar mass moment of inertia of the disk (about the shaft axis): the gyroscopic term."""
     Id_kg_m2: NonNegFloat
+    """Diametral (transverse) mass moment of inertia of the disk, about an axis across the shaft through its
+    centre."""
     name: Optional[str] = None
+    """Name of the disk in the output files; default disk1, disk2 ... in deck order."""
 
 
 class Operating(DeckModel):
     speed_rpm: NonNegFloat
+    """Shaft speed of the rotor analyses and of the bearings' operating point (spin about +z); `modal.speed_rpm`,
+    `frf.speed_rpm` and a command's `--speed` override it where they exist."""
     gravity: bool = False
+    """true: the weight of the shaft, tool, holder and disks acts along -y (a static load of every rotor
+    analysis)."""
     g_m_s2: PositiveFloat = 9.80665
-    # the operating speed range for API 684 separation margins (default: speed_rpm alone)
+    """Gravitational acceleration used when `gravity` is true."""
     min_operating_rpm: Optional[PositiveFloat] = None
+    """Minimum operating speed: the lower edge of the range from which API 684 separation margins of the
+    critical speeds below it are measured. None: speed_rpm."""
     max_continuous_rpm: Optional[PositiveFloat] = None
+    """Maximum continuous speed: the upper edge of the range from which API 684 separation margins of the
+    critical speeds above it are measured. None: speed_rpm."""
 
     @model_validator(mode="after")
     def _range(self) -> "Operating":
@@ -125,82 +171,130 @@ class Operating(DeckModel):
 
 class PointLoad(DeckModel):
     node: NodeNumber
+    """Node number (1-based) the load acts on."""
     fx_N: float = 0.0
+    """Static force along x (horizontal) on the shaft at the node."""
     fy_N: float = 0.0
+    """Static force along y (vertical, up) on the shaft at the node."""
     fz_N: float = 0.0  # axial; adds the axial DOF to the model
+    """Static axial force along +z on the shaft at the node. A non-zero value gives the rotor its axial DOF and
+    needs a bearing that holds the shaft axially (type ball, or dtrb with dofs: 5)."""
     mx_Nm: float = 0.0
+    """Static moment about x on the shaft at the node (right-hand rule)."""
     my_Nm: float = 0.0
+    """Static moment about y on the shaft at the node (right-hand rule)."""
 
 
 class NodeDof(DeckModel):
     node: NodeNumber
+    """Node number (1-based)."""
     dof: Dof = "x"
+    """Direction at the node: x, y (translations) or theta_x, theta_y (rotations about x and y, right-hand
+    rule)."""
 
 
 class StaticSection(DeckModel):
     stiffness_at: NodeDof = NodeDof(node=1, dof="x")
+    """Node and direction of the static stiffness reported by `static`: the inverse of the static compliance
+    there (N/m for x or y, N m/rad for a rotation)."""
 
 
 class ModalSection(DeckModel):
     speed_rpm: Optional[NonNegFloat] = None
+    """Shaft speed of the modal analysis; none: `operating.speed_rpm` (`spindlesim modal --speed` overrides
+    both)."""
     modes: Annotated[int, Field(ge=1, le=1000)] = 8
+    """Number of modes computed, lowest natural frequencies first."""
 
 
 class CampbellSection(DeckModel):
     speeds_rpm: FrequencyRange = FrequencyRange(start=0.0, stop=12000.0, count=50)
+    """Shaft speeds of the Campbell diagram (the bearings' state is solved again at each one)."""
     modes: Annotated[int, Field(ge=1, le=1000)] = 8
+    """Number of modes tracked over the speeds."""
     # also the diagram with every bearing's coefficients frozen at this speed (e.g. 0: the stiffness at
     # rest), drawn over the speed-dependent one: what the speed effects of the bearings change
     compare_frozen_rpm: Optional[NonNegFloat] = None
+    """Also draw the diagram with every bearing held at its coefficients of this speed (e.g. 0: the stiffness at
+    rest) while the gyroscopic terms follow the speed, over the speed-dependent one: what the bearings' speed
+    effects change (campbell_frozen.png and the frozen results in campbell.h5). None: not drawn."""
 
 
 class FrfSection(DeckModel):
     """Receptance output/input; without them, x/x at the tool tip (deck section ``tool``) or node 1."""
 
     input: Optional[NodeDof] = None
+    """Node and direction of the exciting force (or moment). None: x at the tool tip when the deck has a `tool`
+    section, else x at node 1."""
     output: Optional[NodeDof] = None
+    """Node and direction of the response. None: the same default as `input`."""
     frequencies_hz: Union[FrequencyRange, Annotated[list[PositiveFloat], Field(min_length=1, max_length=100_000)]] \
         = FrequencyRange(start=10.0, stop=5000.0, count=1000)
+    """Frequencies of the receptance: a range, or an explicit list of positive frequencies."""
     speed_rpm: Optional[NonNegFloat] = None
+    """Shaft speed of the FRF; none: `operating.speed_rpm` (`spindlesim frf --speed` overrides both)."""
 
 
 class UnbalanceSection(DeckModel):
     node: NodeNumber
+    """Node number (1-based) that carries the unbalance."""
     amount_g_mm: PositiveFloat
+    """Unbalance m e: the unbalance mass times its distance from the axis (1 g mm = 1e-6 kg m)."""
     phase_deg: float = 0.0
+    """Angular position of the unbalance at t = 0, from +x towards +y."""
     output: NodeDof = NodeDof(node=1, dof="x")
+    """Node and direction of the response plotted and written over speed."""
     speeds_rpm: FrequencyRange
+    """Shaft speeds of the synchronous response (stop greater than start). `rotor_transient` also applies the
+    unbalance when its `unbalance` key is true."""
 
 
 class SweepRange(DeckModel):
     start: AnyNumber
+    """First value of the parameter, in the unit of the deck key it sets."""
     stop: AnyNumber
+    """Last value of the parameter (included)."""
     count: Annotated[int, Field(ge=1, le=100_000)]
+    """Number of evenly spaced values; whole numbers when start and stop are integers and the step is whole."""
 
 
 class SweepSection(DeckModel):
     """A parameter study (issue 7): ``spindlesim sweep DECK`` runs ``analysis`` for every case."""
 
     analysis: str
+    """Analysis run for every case (an analysis name of `analyses`, e.g. modal, campbell, static; checked when
+    the sweep starts, not when the deck is read); `spindlesim sweep --analysis` overrides it."""
     mode: Literal["grid", "list"] = "grid"
+    """grid: every combination of the parameters' values; list: the i-th values of all parameters together (the
+    lists must have the same length)."""
     # deck path -> list of values, or {start, stop, count}
     parameters: Annotated[dict[str, Union[SweepRange, Annotated[list[Any], Field(min_length=1, max_length=10_000)]]],
                           Field(min_length=1, max_length=20)]
+    """Deck path -> its values: a list, or {start, stop, count}. A path walks the deck by key, list index
+    (0-based) or the name of a named item: operating.speed_rpm, bearings.front.K_N_m.0.0, shaft.elements.3.2.
+    `--set PATH=...` on the command line overrides the entry with the same path."""
 
 
 class Perturbation(DeckModel):
     """A static force held until t = 0 and then released (free vibration from a smooth shape)."""
 
     node: NodeNumber
+    """Node number (1-based) where the force is applied."""
     dof: Dof = "x"
+    """Direction of the force (a rotation DOF gives a moment, in N m)."""
     force_N: float = 100.0
+    """Static force held until t = 0 and then released: the run starts from the deflected shape, at rest."""
 
 
 class SpeedRamp(DeckModel):
     """A linear speed ramp over the whole run (a run-up or run-down)."""
 
     start: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
+    """Shaft speed at t = 0 (in rpm, the unit of `speed_rpm`)."""
     stop: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
+    """Shaft speed at the end of the run (rpm); the speed changes linearly in between and the bearings'
+    forces and the shaft's gyroscopic terms follow it, while what the operating point at `operating.speed_rpm`
+    sets (a fluid film's thermal-equilibrium viscosity) stays fixed."""
 
 
 class TimeLoad(DeckModel):
@@ -209,13 +303,24 @@ class TimeLoad(DeckModel):
     linearly to its amplitude at ``time_s``."""
 
     node: NodeNumber
+    """Node number (1-based) the load acts on."""
     dof: Dof = "x"
+    """Direction of the load (a rotation DOF gives a moment, in N m)."""
     kind: Literal["harmonic", "step", "ramp"] = "harmonic"
+    """harmonic: amplitude sin(2 pi f t + phase) or sin(order x shaft angle + phase); step: the full amplitude
+    from `time_s` on; ramp: grows linearly from 0 at t = 0 to the full amplitude at `time_s`, then stays."""
     amplitude_N: float
+    """Amplitude of the force (of the moment in N m for a rotation DOF); the sign sets its direction."""
     frequency_hz: Optional[PositiveFloat] = None
+    """Frequency of a harmonic load; give this or `order`, not both."""
     order: Optional[Annotated[float, Field(gt=0, le=1000.0)]] = None
+    """Frequency of a harmonic load as a multiple of the shaft speed (its phase follows the shaft angle, also
+    during a speed ramp); give this or `frequency_hz`."""
     phase_deg: float = 0.0
+    """Phase of a harmonic load at t = 0."""
     time_s: NonNegFloat = 0.0
+    """Switch-on time of a step; time at which a ramp reaches its amplitude (0: the full amplitude from the
+    start)."""
 
     @model_validator(mode="after")
     def _frequency(self) -> "TimeLoad":
@@ -228,18 +333,34 @@ class RotorTransientSection(DeckModel):
     """Time response of the rotor with its bearings' full nonlinear reactions (``spindlesim transient``)."""
 
     duration_s: PositiveFloat = 0.5
+    """Simulated time (`spindlesim transient --duration` overrides it)."""
     # newmark: implicit average acceleration + Newton (any bearing); rk4: explicit fixed step with
     # compiled bearing forces; RK45, DOP853, Radau, BDF, LSODA: scipy's adaptive methods (a cross-check)
     method: Literal["newmark", "rk4", "RK45", "DOP853", "Radau", "BDF", "LSODA"] = "newmark"
+    """Time integrator: newmark (implicit average acceleration with Newton iterations, any bearing); rk4
+    (explicit, fixed step, compiled bearing forces); RK45, DOP853, Radau, BDF, LSODA (scipy's adaptive methods,
+    slower: a cross-check)."""
     time_step_s: Optional[PositiveFloat] = None  # newmark default 5e-5; rk4 default: min(1 us, stability)
+    """Largest time step; the step used is the largest one not above it that lands on every sample. None: 5e-5 s
+    for newmark; for rk4 the smaller of 1 us and its stability limit."""
     sample_rate_hz: Optional[PositiveFloat] = None
+    """Rate of the recorded samples. None: every step for newmark; otherwise 50 samples per roller pass of the
+    first roller bearing (per revolution without one), at least 2 kHz."""
     rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None  # scipy methods
+    """Relative tolerance of the scipy methods (ignored by newmark and rk4). None: 1e-8."""
     record_node: Optional[NodeNumber] = None  # default: the first bearing's node
+    """Node whose response is recorded and plotted (orbit, spectrum). None: the node of the first bearing."""
     settle_fraction: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.3  # start of the steady part for the spectrum
+    """Start of the steady part used for the spectrum and the Poincare map, as a fraction of the duration."""
     unbalance: bool = True  # apply the deck's unbalance section
+    """true: apply the deck's `unbalance` section (rotating with the shaft) when it has one."""
     speed_rpm: Optional[SpeedRamp] = None  # a run-up / run-down; default: operating.speed_rpm constant
+    """A linear run-up or run-down over the whole run. None: constant `operating.speed_rpm`."""
     loads: Annotated[list[TimeLoad], Field(max_length=1000)] = []
+    """Forces in time at nodes, added to the static loads (point loads and gravity)."""
     perturbation: Optional[Perturbation] = None
+    """Start from the shape deflected by a static force that is released at t = 0. None: start from the static
+    equilibrium."""
 
 
 AnalysisName = Literal["static", "modal", "campbell", "frf", "unbalance"]
@@ -250,31 +371,60 @@ def bearing_types() -> dict[str, type[BaseModel]]:
     return {name: t.entry for name, t in BEARING_TYPES.items()}
 
 
+def _first_paragraph(doc: str | None) -> str:
+    import inspect
+
+    return inspect.cleandoc(doc or "").split("\n\n")[0]
+
+
 @lru_cache(maxsize=1)
 def deck_model() -> type[BaseModel]:
-    """The top-level Deck model: rotor and analysis sections, the bearing union, :data:`SECTIONS`."""
+    """The top-level Deck model: rotor and analysis sections, the bearing union, :data:`SECTIONS`.
+
+    The description of a section of :data:`SECTIONS` is the first paragraph of its model's docstring."""
+    from .loader import ANALYSES
+
     models = tuple(bearing_types().values())
     bearing = Annotated[Union[models], Field(discriminator="type")]
-    extra = {name: (Optional[m], None) for name, m in SECTIONS.items()}
+    extra = {name: (Optional[m], Field(None, description=_first_paragraph(m.__doc__))) for name, m in SECTIONS.items()}
     return create_model(
         "Deck",
         __base__=DeckModel,
-        title=(str, "untitled"),
-        shaft=(Optional[Shaft], None),
-        tool=(Optional[ToolSection], None),
-        journal=(Optional[Journal], None),
-        disks=(Annotated[list[Disk], Field(max_length=1000)], []),
-        bearings=(Annotated[list[bearing], Field(max_length=200)], []),  # type: ignore[valid-type]
-        operating=(Optional[Operating], None),
-        loads=(Annotated[list[PointLoad], Field(max_length=1000)], []),
-        analyses=(Optional[Annotated[list[str], Field(max_length=50)]], None),
-        static=(StaticSection, StaticSection()),
-        modal=(ModalSection, ModalSection()),
-        campbell=(CampbellSection, CampbellSection()),
-        frf=(FrfSection, FrfSection()),
-        unbalance=(Optional[UnbalanceSection], None),
-        sweep=(Optional[SweepSection], None),
-        rotor_transient=(Optional[RotorTransientSection], None),
+        title=(str, Field("untitled", description="Free text naming the machine or study (the `spindlesim decks` "
+                          "list, sweep plot titles); the whole deck text is stored in every output file.")),
+        shaft=(Optional[Shaft], Field(None, description="The flexible rotor: Timoshenko beam elements along z. "
+                                      "Give this or `journal`.")),
+        tool=(Optional[ToolSection], Field(None, description=_first_paragraph(ToolSection.__doc__) + " Needs "
+                                           "`shaft`.")),
+        journal=(Optional[Journal], Field(None, description=_first_paragraph(Journal.__doc__) + " Give this or "
+                                          "`shaft`.")),
+        disks=(Annotated[list[Disk], Field(max_length=1000)],
+               Field([], description="Rigid disks at nodes: mass and inertia (wheels, motor rotors, clamping units).")),
+        bearings=(Annotated[list[bearing], Field(max_length=200)],  # type: ignore[valid-type]
+                  Field([], description="The bearings between rotor nodes and ground, one entry each; `type` chooses "
+                                        "the bearing family and so the entry's other keys.")),
+        operating=(Optional[Operating], Field(None, description="Operating point of the rotor analyses: speed and "
+                                                                "gravity.")),
+        loads=(Annotated[list[PointLoad], Field(max_length=1000)],
+               Field([], description="Static forces and moments on the rotor at nodes.")),
+        analyses=(Optional[Annotated[list[str], Field(max_length=50)]],
+                  Field(None, description="The analyses `spindlesim run` does, in this order; names: "
+                                          f"{', '.join(ANALYSES)}. None (or an empty list): every analysis the deck "
+                                          "has the sections for (`spindlesim run --help` lists them).")),
+        static=(StaticSection, Field(StaticSection(), description="Settings of the static analysis.")),
+        modal=(ModalSection, Field(ModalSection(), description="Settings of the modal analysis (damped modes).")),
+        campbell=(CampbellSection, Field(CampbellSection(), description="Settings of the Campbell diagram.")),
+        frf=(FrfSection, Field(FrfSection(), description="Settings of the frequency response (receptance) between "
+                                                     "two DOFs.")),
+        unbalance=(Optional[UnbalanceSection], Field(None, description="An unbalance and the synchronous response "
+                                                     "to it over speed (`spindlesim unbalance`); `rotor_transient` "
+                                                     "applies it too.")),
+        sweep=(Optional[SweepSection], Field(None, description="A parameter study: `spindlesim sweep DECK` runs "
+                                             "`analysis` for every case of the parameters' values (not run by "
+                                             "`spindlesim run`).")),
+        rotor_transient=(Optional[RotorTransientSection],
+                         Field(None, description=_first_paragraph(RotorTransientSection.__doc__) + " Every key is "
+                               "optional; without the section `spindlesim transient` uses the defaults.")),
         **extra,
     )
 

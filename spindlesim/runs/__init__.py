@@ -13,12 +13,15 @@ is the one table of them (module, function), imported only when a run is asked f
 from __future__ import annotations
 
 import importlib
+import logging
 from pathlib import Path
 from typing import Any, Callable
 
 from ..deck.loader import ANALYSES, LoadedDeck
 from ..output import drawing
 from ..output.hdf5 import RunInfo
+
+log = logging.getLogger(__name__)
 
 Progress = Callable[[int, int], None] | None
 
@@ -74,19 +77,36 @@ def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dic
     return paths
 
 
+#: what ``spindlesim run`` does when the deck has no ``analyses`` list: every analysis the deck has the
+#: sections for, in this order (analyses, what the deck needs for them).  :func:`default_analyses`
+#: applies it; ``spindlesim run --help`` says the same (tests/cli/test_run_default.py keeps them equal).
+DEFAULT_RUN: tuple[tuple[tuple[str, ...], str], ...] = (
+    (("thermal", "coefficients"), "fluid-film bearings (type three_lobe or plain) and operating"),
+    (("static", "modal", "campbell", "frf"), "a rotor (shaft or journal) and operating"),
+    (("unbalance",), "a rotor, operating and an unbalance section"),
+    (("transient",), "a rotor, operating and a rotor_transient section; or a transient section"),
+    (("bearing",), "a bearing section"),
+    (("dtrb",), "a dtrb section"),
+    (("contact",), "a contact section"),
+    (("chatter",), "a chatter section"),
+)
+
+
 def default_analyses(loaded: LoadedDeck) -> list[str]:
-    """What ``spindlesim run`` does when the deck has no ``analyses`` list: the rotor analyses the deck
-    supports, the fluid-film tables when it has fluid-film bearings, and every section it contains."""
+    """What ``spindlesim run`` does when the deck has no ``analyses`` list: every analysis the deck has the
+    sections for (:data:`DEFAULT_RUN`)."""
     d = loaded.deck
-    names: list[str] = []
-    if (d.shaft is not None or d.journal is not None) and d.operating is not None:
-        names = ["static", "modal", "campbell", "frf"]
-        if d.unbalance is not None:
-            names.append("unbalance")
-        if d.rotor_transient is not None:
-            names.append("transient")
-    if any(b.type in ("three_lobe", "plain") and b.load_N is not None for b in d.bearings):
-        names[:0] = ["thermal", "coefficients"]
-    names += [n for n in ("bearing", "dtrb", "contact", "transient", "chatter") if getattr(d, n, None) is not None
-              and n not in names]
-    return names
+    rotor = (d.shaft is not None or d.journal is not None) and d.operating is not None
+    if (d.shaft is not None or d.journal is not None) and d.operating is None:
+        log.warning("the deck has a rotor but no 'operating' section: the rotor analyses are not run")
+    has = {
+        "thermal": d.operating is not None and any(b.type in ("three_lobe", "plain") for b in d.bearings),
+        "static": rotor,
+        "unbalance": rotor and d.unbalance is not None,
+        "transient": (rotor and d.rotor_transient is not None) or d.transient is not None,
+        "bearing": d.bearing is not None,
+        "dtrb": d.dtrb is not None,
+        "contact": d.contact is not None,
+        "chatter": d.chatter is not None,
+    }
+    return [name for names, _ in DEFAULT_RUN if has[names[0]] for name in names]

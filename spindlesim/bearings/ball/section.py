@@ -88,9 +88,15 @@ def _check_expansion(value: float | None, key: str) -> None:
 
 class BallMaterial(DeckModel):
     E_GPa: PositiveFloat = 208.0
+    """Young's modulus."""
     poisson: Annotated[float, Field(gt=-1.0, lt=0.5)] = 0.3
+    """Poisson's ratio (dimensionless)."""
     density_kg_m3: PositiveFloat = 7850.0
-    thermal_expansion_1_K: Optional[Expansion] = None  # default: bearing steel's, or Si3N4's below 5000 kg/m3
+    """Density (the balls' centrifugal force and gyroscopic moment)."""
+    thermal_expansion_1_K: Optional[Expansion] = None
+    """Linear thermal expansion coefficient [1/K] of this part's material, for the bearing at temperature
+    (`temperatures_C`). None: bearing steel's 11.5e-6, or silicon nitride's 3.2e-6 when the density is below
+    5000 kg/m3 (docs/theory.md, "Spindle thermal model: heat generation and growth")."""
 
     @model_validator(mode="after")
     def _expansion(self):
@@ -107,9 +113,13 @@ class MountMaterial(DeckModel):
     """Shaft or housing body of a fit."""
 
     E_GPa: PositiveFloat
+    """Young's modulus of the shaft or housing body."""
     poisson: Annotated[float, Field(gt=-1.0, lt=0.5)]
+    """Poisson's ratio of the body (dimensionless)."""
     density_kg_m3: PositiveFloat
+    """Density of the body (the shaft's centrifugal growth at speed)."""
     thermal_expansion_1_K: Expansion
+    """Linear thermal expansion coefficient of the body [1/K] (steel about 11.5e-6, grey cast iron 10-11e-6)."""
 
     @model_validator(mode="after")
     def _expansion(self):
@@ -127,11 +137,18 @@ class BallTemperatures(DeckModel):
     operating clearance and preload that its growth gives.  shaft / housing default to the rings'."""
 
     inner_ring: TemperatureC
+    """Uniform temperature of the inner ring(s) [C]."""
     outer_ring: TemperatureC
+    """Uniform temperature of the outer ring(s) [C]."""
     rolling_elements: TemperatureC
+    """Uniform temperature of the balls [C]."""
     reference: TemperatureC = 20.0
+    """Temperature [C] at which the geometry, the clearance, the preload and the fits are given (the cold
+    assembly); each part grows by its expansion coefficient times (T - reference)."""
     shaft: Optional[TemperatureC] = None
+    """Temperature of the shaft at the inner-ring seat [C] (the inner fit). None: the inner ring's."""
     housing: Optional[TemperatureC] = None
+    """Temperature of the housing at the outer-ring seat [C] (the outer fit). None: the outer ring's."""
 
     @model_validator(mode="after")
     def _above_absolute_zero(self):
@@ -146,7 +163,11 @@ class BallFits(DeckModel):
     """Diametral interference (> 0) or clearance (< 0) of the ring seats at the reference temperature [um]."""
 
     shaft: Annotated[float, Field(ge=-1e5, le=1e5)] = 0.0
+    """Diametral interference of the inner ring on the shaft [um] at the reference temperature (> 0: a press
+    fit; < 0: clearance)."""
     housing: Annotated[float, Field(ge=-1e5, le=1e5)] = 0.0
+    """Diametral interference of the outer ring in the housing [um] at the reference temperature (> 0: a
+    press fit; < 0: clearance, the usual loose housing fit of a floating set)."""
 
 
 class BallMounting(DeckModel):
@@ -154,11 +175,17 @@ class BallMounting(DeckModel):
     housing outer diameter (null: a housing much thicker than the ring) and the two bodies."""
 
     bore_mm: PositiveFloat
+    """Bearing bore d (the inner ring's seat on the shaft)."""
     outer_diameter_mm: PositiveFloat
+    """Bearing outside diameter D (the outer ring's seat in the housing)."""
     shaft_bore_mm: NonNegFloat = 0.0
+    """Bore of a hollow shaft at the seat (a drawbar bore); 0: solid."""
     housing_outer_diameter_mm: Optional[PositiveFloat] = None
+    """Outer diameter of the housing around the seat. None: a housing much thicker than the ring (rigid)."""
     shaft_material: MountMaterial = MountMaterial(**STEEL_SHAFT)
+    """Shaft body of the inner fit (default steel: 208 GPa, 0.3, 7850 kg/m3, 11.5e-6 1/K)."""
     housing_material: MountMaterial = MountMaterial(**CAST_IRON_HOUSING)
+    """Housing body of the outer fit (default grey cast iron: 110 GPa, 0.26, 7200 kg/m3, 10.5e-6 1/K)."""
 
     @model_validator(mode="after")
     def _diameters(self):
@@ -174,15 +201,27 @@ class BallMounting(DeckModel):
 
 class PositionPreload(DeckModel):
     kind: Literal["position"]
+    """position: the set is clamped to a fixed axial offset (needs opposed rows: DB or DF); spring: a constant
+    axial force on the floating outer rings."""
     axial_um: NonNegFloat
+    """Total axial approach the clamping imposes on the set beyond first contact (the catalogue preload offset
+    of a matched pair); each opposed group takes half of it. 0: rows just touching."""
 
 
 class SpringPreload(DeckModel):
     kind: Literal["spring"]
+    """position: the set is clamped to a fixed axial offset (needs opposed rows: DB or DF); spring: a constant
+    axial force on the floating outer rings."""
     axial_N: PositiveFloat
+    """Constant axial force of the springs on the floating outer rings (they slide in the housing, so these rows
+    add no axial stiffness)."""
     # which rows float: those with the thrust direction of the set's end row on this side; outboard /
     # inboard: the side facing the nearer / farther end of the shaft (resolved by ``placed``)
     floating: Literal["outboard", "inboard", "+z", "-z"] = "outboard"
+    """Which rows float: those with the thrust direction of the set's end row on this side. outboard: the side
+    facing the nearer end of the shaft (where the springs of a rear set usually sit); inboard: the other side;
+    +z, -z: the side in the deck's frame. A bearing at the middle of the shaft and the standalone `bearing`
+    section take outboard as +z."""
 
 
 SIDES = {"+z": 1, "-z": -1}
@@ -195,25 +234,61 @@ class _BallKeys(DeckModel):
     """Keys shared by the rotor entry and the standalone section."""
 
     balls: Annotated[int, Field(ge=3, le=1000)]
+    """Number of balls in each row; they must fit on the pitch circle."""
     ball_diameter_mm: PositiveFloat
+    """Ball diameter D; less than half the pitch diameter."""
     pitch_diameter_mm: PositiveFloat
+    """Pitch diameter d_m: the circle through the ball centres."""
     contact_angle_deg: Annotated[float, Field(ge=0.0, lt=60.0)]
+    """Free contact angle the bearing is made with (15, 25 ... for angular-contact bearings; 0 for a deep-groove
+    bearing)."""
     inner_conformity: Annotated[float, Field(gt=0, le=10.0)]  # 0.5 .. 1 (checked below, with the reason)
+    """Inner groove radius over the ball diameter, f_i = r_i / D (dimensionless); must lie between 0.5 and 1
+    (0.52 is usual)."""
     outer_conformity: Annotated[float, Field(gt=0, le=10.0)]
+    """Outer groove radius over the ball diameter, f_o = r_o / D (dimensionless); between 0.5 and 1 (0.53 is
+    usual)."""
     radial_clearance_um: float = 0.0
+    """Operating radial internal clearance P_d: the total radial play of the inner ring (diametral clearance,
+    not per side); negative: interference from fits and temperature. Limited so that the free contact angle
+    stays below 60 deg."""
     material: BallMaterial = BallMaterial()
+    """Rings' material (and the balls' unless `ball_material` is given): through-hardened bearing steel by
+    default."""
     ball_material: Optional[BallMaterial] = None
+    """Balls' material when it differs from the rings' (e.g. silicon nitride in a hybrid bearing: E_GPa 310,
+    poisson 0.26, density_kg_m3 3200); a key left out takes the steel default below, not `material`'s value.
+    None: as `material`."""
     arrangement: Literal["single", "DB", "DF", "DT"] = "single"
+    """single: one row; a matched set: DB (back-to-back, O), DF (face-to-face, X), DT (tandem, every row carries
+    the same thrust direction)."""
     rows: Optional[Annotated[int, Field(ge=1, le=4)]] = None
+    """Number of ball rows: 1 for single, 2 to 4 for a set. None: 1 for single, 2 for a set."""
     row_spacing_mm: Optional[PositiveFloat] = None
+    """Axial distance between adjacent ball rows of a set (e.g. the bearing width for matched bearings side by
+    side); required for a set, at least the ball diameter. The rows sit symmetrically about the node."""
     axial_direction: Literal["+z", "-z"] = "+z"
+    """Thrust direction of the shaft on the bearing that the rows carry: for a single row and a tandem set, and
+    the tandem pair of a 3-row set; +z: the shaft pushing along +z. Has no meaning for a DB or DF set with an
+    even number of rows."""
     preload: Optional[PreloadSpec] = None
+    """Preload of the set: {kind: position, axial_um} or {kind: spring, axial_N, floating}. None: no preload
+    (only the clearance and the loads)."""
     model: Literal["outer_race_control", "full"] = "outer_race_control"
+    """Ball equilibrium: outer_race_control (the whole gyroscopic couple on the outer contact, Jones 1960) or
+    full (the couple shared by both contacts, no race-control hypothesis)."""
     dynamic_load_rating_N: Optional[PositiveFloat] = None
+    """Basic dynamic load rating C of ONE bearing (a catalogue value) for the rating lives. None: computed from
+    the geometry (ISO 281)."""
     reliability_percent: Annotated[float, Field(ge=90.0, le=99.95)] = 90.0
+    """Reliability of the rating life L_n = a_1 L_10 (ISO 281 a_1 factor): 90 gives L_10."""
     temperatures_C: Optional[BallTemperatures] = None
+    """Prescribed temperatures of the parts: the bearing is computed at the operating clearance and preload
+    its thermal growth gives (as in MESYS). None: every part at the reference temperature (as made)."""
     fits_um: Optional[BallFits] = None
+    """Ring fits on the shaft and in the housing (diametral interference); needs `mounting`. None: free rings."""
     mounting: Optional[BallMounting] = None
+    """Seat diameters and the shaft and housing bodies of the fits (and of the rings' growth at speed)."""
 
     @property
     def row_count(self) -> int:
@@ -263,15 +338,23 @@ class BallBearingEntry(_BallKeys):
     """Rotor deck entry ``type: ball`` (5 DOF at ``node``)."""
 
     type: Literal["ball"]
+    """Bearing type: ball (angular-contact or deep-groove ball bearing, single row or matched set; 5 DOF at its
+    node, no damping model)."""
     name: str
+    """Bearing name, unique in the deck (output groups, sweep paths)."""
     node: NodeNumber
+    """Shaft node of the bearing (1-based); the rows sit about it."""
 
 
 class LoadSweep(DeckModel):
     component: LoadComponent
+    """Load component swept; the other components keep their `load` values."""
     start: Annotated[float, Field(ge=-1e9, le=1e9)]  # N or N m
+    """First value of the swept component (N for a force, N m for a moment)."""
     stop: Annotated[float, Field(ge=-1e9, le=1e9)]
+    """Last value (included); must differ from `start`."""
     count: Annotated[int, Field(ge=2, le=100_000)]
+    """Number of evenly spaced load values, both ends included."""
 
     @model_validator(mode="after")
     def _distinct(self):
@@ -282,18 +365,29 @@ class LoadSweep(DeckModel):
 
 class BallSweeps(DeckModel):
     preload: Optional[Range] = None     # in the preload's unit: axial_um (position) or axial_N (spring)
+    """Preload sweep in the unit of the preload's kind: axial_um for position, axial_N for spring (a spring
+    sweep must start above 0 N); needs `preload`."""
     load: Optional[LoadSweep] = None
+    """Sweep of one load component at the section's speed."""
     speed_rpm: Optional[Range] = None
+    """Speed sweep at the section's load (stiffness and contact angles over speed)."""
 
 
 class BallSection(_BallKeys):
-    """The ``bearing:`` section of the standalone command with ``type: ball``."""
+    """What `spindlesim bearing` computes: one ball bearing or matched set (``type: ball``) under a load:
+    stiffness, ball loads, contact angles, pressures and lives, with optional sweeps."""
 
     type: Literal["ball"] = "ball"
+    """Bearing type of the section: ball (the only type; a deck with a `dtrb` section runs that bearing
+    instead)."""
     name: str = "ball"
+    """Bearing name in the output file."""
     load: Load5 = Load5()
+    """Load of the shaft on the bearing (forces and moments about the bearing centre)."""
     speed_rpm: NonNegFloat = 0.0
+    """Inner-ring speed of the operating point (outer ring fixed)."""
     sweeps: BallSweeps = BallSweeps()
+    """Optional sweeps over preload, load and speed, each around the operating point."""
 
     @model_validator(mode="after")
     def _sweeps(self):

@@ -47,22 +47,36 @@ MAX_POLAR = 16
 
 class DtrbMaterial(DeckModel):
     E_GPa: PositiveFloat = 208.0
+    """Young's modulus of rollers and rings."""
     poisson: Annotated[float, Field(gt=-1.0, lt=0.5)] = 0.3
+    """Poisson's ratio (dimensionless)."""
     density_kg_m3: PositiveFloat = 7850.0
+    """Density of the rollers (centrifugal force)."""
 
 
 class DtrbGeometrySpec(DeckModel):
     rollers_per_row: Annotated[int, Field(ge=3, le=200)]
+    """Number of rollers in each of the two rows; they must fit on the pitch circle."""
     cup_angle_deg: Annotated[float, Field(gt=0.0, lt=60.0)]
+    """Cup (outer raceway) angle alpha (catalogue e = 1.5 tan alpha)."""
     pitch_diameter_mm: PositiveFloat
+    """Diameter of the circle through the roller mid-points."""
     large_end_diameter_mm: PositiveFloat
+    """Roller diameter at its large end, D_l; less than half the pitch diameter."""
     roller_length_mm: PositiveFloat
+    """Effective roller length l."""
     large_end_offset_mm: PositiveFloat
+    """Axial distance rc of the large end's centre from the bearing centre."""
     crown_radius_mm: Optional[PositiveFloat] = None
+    """Crowning radius R of the roller profile (seed 001 eq. 1). None: a straight roller."""
     end_sphere_ratio: Annotated[float, Field(gt=0.3, le=1.2)] = 0.9
+    """Radius of the roller's large-end sphere over the apex distance, Rs / apex distance (dimensionless)."""
     rib_contact_height_ratio: Annotated[float, Field(gt=0.0, lt=1.0)] = 0.5
+    """Height of the rib contact above the roller axis over the large-end radius D_l / 2 (dimensionless)."""
     slices: Annotated[int, Field(ge=1, le=500)] = 30
+    """Number of slices along each roller for the line contact."""
     material: DtrbMaterial = DtrbMaterial()
+    """Material of rollers and rings (bearing steel by default)."""
 
     @model_validator(mode="after")
     def _fits(self) -> "DtrbGeometrySpec":
@@ -77,8 +91,11 @@ class DtrbGeometrySpec(DeckModel):
 
 class SweepRange(DeckModel):
     start: AnyNumber  # the unit of the sweep's key applies too (preload_sweep_um, radial_sweep_N)
+    """First value, in the unit of the sweep's key (um of preload, N of radial load)."""
     stop: AnyNumber
+    """Last value (included); greater than `start`."""
     count: Count
+    """Number of evenly spaced values, both ends included."""
 
     @model_validator(mode="after")
     def _order(self) -> "SweepRange":
@@ -88,15 +105,30 @@ class SweepRange(DeckModel):
 
 
 class DtrbSection(DeckModel):
+    """What `spindlesim dtrb` computes: the double-row tapered roller bearing at one load, with preload and
+    radial-load sweeps and polar plots of the roller loads."""
+
     bearing: DtrbGeometrySpec
+    """Geometry of the bearing."""
     preload_um: Annotated[float, Field(ge=0.0)] = 30.0
+    """Preload delta0 of each row (seed 001 eq. 10): each cone is pushed towards the bearing centre by delta0
+    beyond first contact (total axial interference 2 delta0)."""
     speed_rpm: Annotated[float, Field(ge=0.0)] = 0.0
+    """Inner-ring speed (outer ring fixed): the rollers' centrifugal force and gyroscopic moment; 0:
+    quasi-static."""
     load: Load5 = Load5()
+    """Load of the shaft on the bearing at the operating point."""
     preload_sweep_um: Optional[SweepRange] = None
+    """Sweep of the preload at the section's load (stiffness against preload, seed 001 Fig. 8); not negative.
+    None: no sweep."""
     radial_sweep_N: Optional[SweepRange] = None
+    """Sweep of the radial load fx_N at the section's preload (seed 001 Fig. 10). None: no sweep."""
     # one load distribution each (at most MAX_POLAR: every polar plot is a full equilibrium)
     polar_preloads_um: Annotated[list[Annotated[float, Field(ge=0.0)]], Field(max_length=MAX_POLAR)] = []
+    """Preloads at which the roller-load distribution is drawn as a polar plot (seed 001 Fig. 9); each is a full
+    equilibrium."""
     polar_radial_loads_N: Annotated[list[float], Field(max_length=MAX_POLAR)] = []
+    """Radial loads fx_N at which the roller-load distribution is drawn as a polar plot (seed 001 Fig. 11)."""
 
     @model_validator(mode="after")
     def _ranges(self) -> "DtrbSection":
@@ -107,12 +139,23 @@ class DtrbSection(DeckModel):
 
 class DtrbBearingEntry(DeckModel):
     type: Literal["dtrb"]
+    """Bearing type: dtrb (double-row tapered roller bearing, back-to-back, quasi-static; nonlinear in
+    `spindlesim transient`)."""
     name: str
+    """Bearing name, unique in the deck."""
     node: NodeNumber
+    """Shaft node of the bearing (1-based)."""
     geometry: DtrbGeometrySpec
+    """Geometry of the bearing (the keys of `dtrb.bearing`)."""
     preload_um: Annotated[float, Field(ge=0.0)] = 0.0
+    """Preload delta0 of each row (seed 001 eq. 10): each cone pushed towards the bearing centre by delta0."""
     axial_load_N: float = 0.0
+    """Axial load FZ of the shaft on the bearing at which a `dofs: 2` bearing is linearised (the rotor has no
+    axial DOF there to carry one). With `dofs: 5` the axial load comes from the rotor's statics and this key
+    is not used."""
     dofs: Literal[2, 5] = 5  # 5: x, y, z, theta_x, theta_y (the rotor gets the axial DOF); 2: x, y only
+    """5: the bearing couples x, y, z, theta_x, theta_y of its node and the rotor gets an axial DOF; 2: only its
+    radial 2x2 block (x, y)."""
 
 
 def geometry_from(spec: DtrbGeometrySpec):

@@ -39,12 +39,25 @@ class Oil(DeckModel):
     ``walther_m`` + ``walther_k`` (ASTM D341, cSt and K, decadic logs)."""
 
     grade: Optional[str] = None
+    """ISO 3448 viscosity grade, e.g. 'ISO VG 3' or 'VG32' (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220,
+    320, 460, 680, 1000 or 1500): a generic mineral oil of that grade (Walther constants from its 40 degC
+    mid-point viscosity and a typical 100 degC one). An unknown grade is reported when the bearing is built
+    (exit code 1), not when the deck is read. Give exactly one of grade, viscosity_Pa_s, or walther_m with
+    walther_k."""
     viscosity_Pa_s: Optional[PositiveFloat] = None
+    """Constant dynamic viscosity: an isoviscous film (the viscosity does not follow the temperature). Density
+    and specific heat may then be left out; without them no temperatures are computed."""
     walther_m: Optional[Annotated[float, Field(gt=0, le=100.0)]] = None  # slope B (dimensionless)
+    """Walther (ASTM D341) slope m of log10 log10(nu + 0.8) = k - m log10(T), nu in cSt and T in K
+    (dimensionless); goes with walther_k."""
     walther_k: Optional[Annotated[float, Field(gt=0, le=100.0)]] = None  # constant A (dimensionless)
+    """Walther (ASTM D341) constant k of the same relation (dimensionless); goes with walther_m."""
     density_kg_m3: Optional[PositiveFloat] = None
+    """Oil density, taken constant; required unless the oil is isoviscous."""
     specific_heat_J_kgK: Optional[PositiveFloat] = None
+    """Specific heat of the oil (heat balance); required unless the oil is isoviscous."""
     inlet_C: float = 40.0
+    """Oil supply temperature theta_i."""
 
     @model_validator(mode="after")
     def _one_model(self) -> "Oil":
@@ -63,55 +76,99 @@ class Oil(DeckModel):
 
 class Ambient(DeckModel):
     temperature_C: float = 20.0
+    """Temperature of the air around the housing, theta_E."""
     air_velocity_m_s: NonNegFloat = 0.0
+    """Air velocity over the housing; sets the default heat-transfer coefficient."""
     housing_area_m2: Optional[PositiveFloat] = None  # default 5 pi D L
+    """Housing surface that gives heat to the air. None: 5 pi D L (a cylinder of diameter 2.5 D and length 2 L).
+    """
     heat_transfer_W_m2K: Optional[PositiveFloat] = None  # default max(15, 7 + 12 sqrt(v))
+    """Heat-transfer coefficient from the housing to the air. None: max(15, 7 + 12 sqrt(v)), v the air velocity
+    in m/s."""
 
 
 class ThermalOptions(DeckModel):
     mixing_lambda: Fraction = 1.0 / 3.0  # seed 003 eq. 11; 1/3 fits its Table 1
+    """Mixing coefficient lambda of the mean film temperature theta = lambda theta_in + (1 - lambda) theta_out
+    (seed 003 eq. 11); 1/3 reproduces seed 003's Table 1."""
     oil_flow: Literal["side", "inlet"] = "side"
+    """Oil flow that carries the heat away: side (the lands' side leakage, replaced by fresh oil; the rest
+    recirculates) or inlet (the lands' inlet flow: all oil renewed)."""
 
 
 class GridOptions(DeckModel):
     circumferential: Annotated[int, Field(ge=24, le=4096)] = 192
+    """Finite-difference intervals of the Reynolds equation around 360 deg."""
     axial: Annotated[int, Field(ge=2, le=256)] = 12
+    """Finite-difference intervals across half the bearing width (the film is symmetric about the mid-plane)."""
 
 
 class Lobes(DeckModel):
     count: Annotated[int, Field(ge=2, le=12)] = 3
+    """Number of lobes (3 for a three-lobe bearing)."""
     groove_width_deg: Annotated[float, Field(ge=0.0, lt=180.0)] = 20.0
+    """Angular width of each axial groove between lobes; less than 360 / count."""
     offset: Annotated[float, Field(ge=0.0, le=1.0)] = 0.5
+    """Lobe offset factor (dimensionless): the lobe's preload centre lies at this fraction of its arc from the
+    leading edge; 0.5: symmetric lobes."""
     orientation: Literal["on_lobe", "between_lobes"] = "on_lobe"
+    """Where the load line falls: on_lobe (the first lobe's centre on the downward load line) or between_lobes
+    (a groove on it)."""
     first_lobe_centre_deg: Optional[float] = None  # overrides orientation (from +x to +y)
+    """Angle of the first lobe's centre, from +x towards +y; overrides `orientation`. None: from `orientation`.
+    """
 
 
 class Grooves(DeckModel):
     count: Annotated[int, Field(ge=0, le=12)] = 0
+    """Number of axial grooves of a plain bearing; 0: a 360 deg bore."""
     width_deg: Annotated[float, Field(gt=0.0, lt=180.0)] = 20.0
+    """Angular width of each groove; together they must leave some bore."""
     centre_deg: Optional[float] = None  # default: 90 deg from the (downward) load line
+    """Angle of the first groove's centre, from +x towards +y. None: 90 deg from the downward load line."""
 
 
 class _FluidFilm(DeckModel):
     name: str
+    """Bearing name, unique in the deck (output groups, sweep paths)."""
     node: NodeNumber
+    """Shaft node of the bearing (1-based)."""
     diameter_mm: PositiveFloat
+    """Journal diameter D."""
     width_mm: PositiveFloat
+    """Bearing width L."""
     clearance_mm: PositiveFloat
+    """Assembled radial clearance Cb (per side: bore radius minus journal radius at the closest point of a
+    centred journal)."""
     load_N: Optional[PositiveFloat] = None
+    """A downward load on the bearing (shaft on bearing, along -y) in addition to the rotor's own static
+    reaction; the film runs at the eccentricity that carries both, and in a rotor the journal is measured from
+    the position carrying `load_N` alone. None: the bearing carries what the rotor's static equilibrium gives it
+    (`thermal` and `coefficients` then need the rotor)."""
     oil: Oil
+    """The lubricant: exactly one viscosity model (grade, viscosity_Pa_s, or walther_m and walther_k) and, for
+    the heat balance, density and specific heat."""
     ambient: Ambient = Ambient()
+    """Air around the housing (heat given off by the housing)."""
     thermal: ThermalOptions = ThermalOptions()
+    """Options of the thermal equilibrium."""
     grid: GridOptions = GridOptions()
+    """Finite-difference grid of the Reynolds equation."""
     # the film force of a transient: per-land tables of the same discrete Reynolds solution (within
     # 0.4-1.7 % of the full solve, microseconds a call) or the full solve at every Newton iteration
     transient_film: Literal["table", "reynolds"] = "table"
+    """Film force in a time integration: table (per-land tables of the same discrete Reynolds solution, within
+    about 0.4 to 1.7 % of it and far faster) or reynolds (the full solution at every call)."""
 
 
 class ThreeLobeBearing(_FluidFilm):
     type: Literal["three_lobe"]
+    """Bearing type: three_lobe (an n-lobe fluid-film bearing, `lobes.count` lobes; coefficients from the
+    Reynolds equation at thermal equilibrium)."""
     preload: Fraction = 0.5
+    """Preload factor mp = 1 - Cb/Cp (dimensionless), Cp the lobes' own clearance."""
     lobes: Lobes = Lobes()
+    """Lobe layout."""
 
     @model_validator(mode="after")
     def _lobes_fit(self) -> "ThreeLobeBearing":
@@ -122,9 +179,14 @@ class ThreeLobeBearing(_FluidFilm):
 
 class PlainBearing(_FluidFilm):
     type: Literal["plain"]
+    """Bearing type: plain (a cylindrical fluid-film journal bearing, 360 deg or with axial grooves)."""
     preload: Annotated[float, Field(ge=0.0, le=0.0)] = 0.0  # a plain bore has no preload
+    """Preload factor: always 0 for a plain bore."""
     grooves: Grooves = Grooves()
+    """Axial grooves of the bore."""
     feed: Literal["max_film", "periodic"] = "max_film"
+    """Film boundary of a 360 deg bore: max_film (the film starts at its largest gap, Raimondi and Boyd 1958) or
+    periodic (the film closes on itself)."""
 
     @model_validator(mode="after")
     def _grooves_fit(self) -> "PlainBearing":

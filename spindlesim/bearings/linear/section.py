@@ -28,8 +28,12 @@ class CoefficientTable(DeckModel):
     """Speed-dependent coefficients, interpolated linearly in speed (held constant outside)."""
 
     speed_rpm: Annotated[list[NonNegFloat], Field(min_length=2, max_length=10_000)]
+    """Speeds of the table, strictly increasing (at least two); the coefficients are interpolated linearly in
+    speed and held constant outside the range."""
     K_N_m: Annotated[list[Matrix2], Field(max_length=10_000)]
+    """One stiffness matrix [[Kxx, Kxy], [Kyx, Kyy]] per speed."""
     C_Ns_m: Annotated[list[Matrix2], Field(max_length=10_000)]
+    """One damping matrix [[Cxx, Cxy], [Cyx, Cyy]] per speed."""
 
     @model_validator(mode="after")
     def _rows(self) -> "CoefficientTable":
@@ -44,11 +48,18 @@ class CoefficientTable(DeckModel):
 
 class LinearEntry(DeckModel):
     type: Literal["linear"]
+    """Bearing type: linear (stiffness and damping coefficients given directly, acting on x and y)."""
     name: str
+    """Bearing name, unique in the deck (output groups, sweep paths)."""
     node: NodeNumber
+    """Shaft node of the bearing (1-based)."""
     K_N_m: Optional[Matrix2] = None
+    """Stiffness matrix [[Kxx, Kxy], [Kyx, Kyy]]: force on the shaft f = -(K q + C q') on (x, y). Give it or
+    `table`."""
     C_Ns_m: Optional[Matrix2] = None
+    """Damping matrix [[Cxx, Cxy], [Cyx, Cyy]]. None: no damping."""
     table: Optional[CoefficientTable] = None
+    """Speed-dependent coefficients instead of `K_N_m` and `C_Ns_m` (used when given)."""
 
     @model_validator(mode="after")
     def _given(self) -> "LinearEntry":

@@ -43,38 +43,68 @@ Rollers = Annotated[int, Field(ge=3, le=100)]
 
 class TransientBearing(DeckModel):
     inner_raceway_diameter_mm: PositiveFloat = 18.738
+    """Diameter of the inner raceway."""
     outer_raceway_diameter_mm: PositiveFloat = 28.262
+    """Diameter of the outer raceway; the rollers must fit between the raceways."""
     roller_diameter_mm: PositiveFloat = 4.762  # seed 000 Table 1 says "radius"; it is the diameter
+    """Roller diameter (seed 000 Table 1 calls it the radius; it is the diameter)."""
     width_mm: PositiveFloat = 6.35
+    """Roller (and race) width: the contact length of Palmgren's stiffness and the width of the flexible outer
+    race."""
     housing_radius_mm: PositiveFloat = 16.0
+    """Radius of the housing bore, i.e. the outer radius of the outer race; must exceed the outer raceway radius
+    (the race thickness is the difference)."""
     radial_clearance_mm: NonNegFloat = 0.0
+    """Radial internal clearance per side: the inner ring moves this far from the centre before a roller is
+    loaded (not the diametral clearance)."""
     slip_inner: Fraction = 0.0
+    """Slip ratio of the rollers at the inner raceway (seed 000 eq. 3; 0: pure rolling); sets the cage speed."""
     slip_outer: Fraction = 0.0
+    """Slip ratio of the rollers at the outer raceway (seed 000 eq. 3; 0: pure rolling)."""
     element: Literal["roller", "ball"] = "roller"
+    """Rolling element: roller (line contact, n = 10/9) or ball (point contact, n = 1.5; rigid_race model only,
+    needs contact_stiffness_N_per_m_n)."""
     # Hertz constant K of Q = K delta^n (total, both contacts); default: Palmgren for a roller
     contact_stiffness_N_per_m_n: Optional[PositiveFloat] = None
+    """Constant K of Q = K delta^n of a rolling element's two contacts in series (unit N/m^n). None: Palmgren's
+    line-contact constant for a roller of this width, taken as that in-series constant (about 2.16 times stiffer
+    than reading it as one contact: module note)."""
     E_GPa: PositiveFloat = 208.0
+    """Young's modulus of the outer race (flexible_race model)."""
     density_kg_m3: PositiveFloat = 7850.0
+    """Density of the outer race and of the rollers (flexible_race model)."""
 
 
 class TransientShaft(DeckModel):
     mass_kg: PositiveFloat = 0.6
+    """Mass of the rigid journal (shaft) in the bearing."""
     damping_Ns_mm: NonNegFloat = 0.2
+    """Viscous damping of the journal to ground in x and in y (in N s/mm: 1 N s/mm = 1000 N s/m)."""
     radial_load_N: NonNegFloat = 6.0  # along -y (gravity direction)
+    """Constant radial load on the journal along -y (gravity direction)."""
 
 
 class TransientOuterRace(DeckModel):
     segments: Annotated[int, Field(ge=3, le=360)] = 12
+    """Number of rigid segments of the flexible outer race (flexible_race model)."""
 
 
 class TransientContact(DeckModel):
     """Eq. 30-31 parameters of the roller contacts (flexible_race model)."""
 
     damping_Ns_m2: NonNegFloat = 1.8e9  # c, with m2 = 1, m3 = 1
+    """Damping coefficient c of the contact law f = k delta^m1 + c sign(v) |v|^m2 delta^m3 (seed 000 eq. 30).
+    Its unit is N (s/m)^m2 / m^m3: the key's N s/m2 holds with both exponents 1."""
     velocity_exponent: Annotated[float, Field(gt=0, le=10.0)] = 1.0
+    """Exponent m2 of the penetration rate in the damping term (dimensionless)."""
     indentation_exponent: Annotated[float, Field(ge=0, le=10.0)] = 1.0
+    """Exponent m3 of the penetration in the damping term (dimensionless); above 0 the damping force starts from
+    zero at first touch."""
     friction: Annotated[float, Field(ge=0, le=10.0)] = 0.0
+    """Coulomb friction coefficient mu at the roller contacts (seed 000 eq. 31; dimensionless)."""
     slip_regularisation_m_s: PositiveFloat = 1e-3
+    """Slip velocity below which friction is smoothed: the sign of the slip v is taken as v / sqrt(v^2 +
+    v_reg^2)."""
 
 
 class TransientHousing(DeckModel):
@@ -86,19 +116,30 @@ class TransientHousing(DeckModel):
     """
 
     stiffness_N_m2: PositiveFloat = 1.2e11
+    """Radial stiffness of the housing under the outer race per metre of bore circumference (each segment gets
+    it times its arc)."""
     damping_Ns_m2: NonNegFloat = 2.0e4
+    """Radial damping of the housing per metre of bore circumference."""
     tangential_stiffness_N_m2: NonNegFloat = 1.2e9
+    """Tangential (circumferential) stiffness of the housing per metre of bore circumference."""
     friction: Annotated[float, Field(ge=0, le=10.0)] = 0.0
+    """Friction coefficient between the outer race and the housing bore (dimensionless)."""
     # the segment's outer face sits on the bore (seed 000 "surface contact"): it resists rocking with
     # k s^2/12, s the segment's arc on the housing radius; false = point support (no rocking stiffness)
     surface_contact: bool = True
+    """true: each segment's outer face sits on the bore and resists rocking (k s^2 / 12, s its arc); false: a
+    point support without rocking stiffness."""
 
 
 class TransientWaviness(DeckModel):
     surface: Literal["inner", "outer", "roller"]
+    """Surface with the waviness: inner raceway, outer raceway or roller."""
     waves: Annotated[int, Field(ge=1, le=10_000)]
+    """Number of waves around the surface (the waviness order)."""
     amplitude_um: NonNegFloat
+    """Amplitude of the waviness."""
     phase_deg: float = 0.0
+    """Phase of the waviness."""
 
 
 class TransientIntegrator(DeckModel):
@@ -107,10 +148,17 @@ class TransientIntegrator(DeckModel):
     # rigid race, the stability limit for the flexible race); rtol is for the adaptive methods
     # (default 1e-7 rigid race, 1e-5 flexible race).
     method: Literal["RK4", "RK45", "DOP853", "LSODA", "BDF", "Radau"] = "RK4"
+    """RK4: compiled fixed-step Runge-Kutta (default); RK45, DOP853, LSODA, BDF, Radau: scipy's adaptive methods
+    on the numpy right-hand side (slow: a cross-check)."""
     step_us: Optional[PositiveFloat] = None
+    """Largest RK4 step. None: 1 us for the rigid race, the RK4 stability limit for the flexible race."""
     rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None
+    """Relative tolerance of the adaptive methods. None: 1e-7 for the rigid race, 1e-5 for the flexible race."""
     sample_rate_hz: Optional[PositiveFloat] = None
+    """Rate of the recorded samples. None: 50 samples per roller pass, at least 2 kHz (RK4 rounds it to a whole
+    number of samples per roller pass)."""
     chunks: Annotated[int, Field(ge=1, le=100000)] = 40
+    """Pieces the run is integrated in; Ctrl-C between two keeps what was computed."""
 
 
 def _check_geometry(b: "TransientBearing", model: str) -> None:
@@ -129,14 +177,25 @@ class RollerEntry(TransientBearing):
     """``type: roller`` in a rotor deck's ``bearings:`` list."""
 
     type: Literal["roller"]
+    """Bearing type: roller (cylindrical roller bearing of seed 000 under any rotor; nonlinear in `spindlesim
+    transient`, acts on x and y)."""
     name: str
+    """Bearing name, unique in the deck."""
     node: NodeNumber
+    """Shaft node of the bearing (1-based)."""
     rollers: Rollers = 8
+    """Number of rollers."""
     model: Literal["rigid_race", "flexible_race"] = "rigid_race"
+    """rigid_race: rings rigid, roller contacts only (2 DOF); flexible_race: the outer race as rigid segments on
+    the housing (seed 000)."""
     outer_race: TransientOuterRace = TransientOuterRace()
+    """The flexible outer race (flexible_race model)."""
     contact: TransientContact = TransientContact()
+    """Damping and friction of the roller contacts (flexible_race model)."""
     housing: TransientHousing = TransientHousing()
+    """Support of the outer race by the housing (flexible_race model)."""
     waviness: Annotated[list[TransientWaviness], Field(max_length=64)] = []
+    """Surface waviness of the raceways or rollers (rigid_race model only)."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "RollerEntry":
@@ -193,17 +252,31 @@ class TransientSection(DeckModel):
     """The rig section ``transient:``: seed 000's 2-DOF test rig (rigid journal in the bearing)."""
 
     model: Literal["flexible_race", "rigid_race"] = "flexible_race"
+    """flexible_race: seed 000's segmented flexible outer race; rigid_race: rigid rings, 2 DOF (Harsha and
+    Kankar, Sunnersjo). `spindlesim transient --model` overrides it."""
     rollers: Rollers = 8
+    """Number of rollers (`--rollers` overrides it)."""
     duration_s: PositiveFloat = 0.3
+    """Simulated time (`--duration` overrides it)."""
     settle_s: Optional[NonNegFloat] = None
+    """Start of the steady part used for the spectrum and the Poincare map; shorter than `duration_s`. None: 40
+    % of the run."""
     speed_rpm: NonNegFloat = 5000.0
+    """Speed of the inner ring (the journal)."""
     bearing: TransientBearing = TransientBearing()
+    """The bearing's geometry and material."""
     shaft: TransientShaft = TransientShaft()
+    """The rigid journal: mass, damping and load."""
     outer_race: TransientOuterRace = TransientOuterRace()
+    """The flexible outer race (flexible_race model)."""
     contact: TransientContact = TransientContact()
+    """Damping and friction of the roller contacts (flexible_race model)."""
     housing: TransientHousing = TransientHousing()
+    """Support of the outer race by the housing (flexible_race model)."""
     waviness: Annotated[list[TransientWaviness], Field(max_length=64)] = []
+    """Surface waviness of the raceways or rollers (rigid_race model only)."""
     integrator: TransientIntegrator = TransientIntegrator()
+    """Time integration settings."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "TransientSection":

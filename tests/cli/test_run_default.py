@@ -1,0 +1,67 @@
+"""`spindlesim run` without an `analyses:` list runs every analysis the deck has the sections for: its
+help text names exactly that, in the order the runs table (spindlesim.runs.DEFAULT_RUN) applies."""
+
+from __future__ import annotations
+
+import re
+from importlib import resources
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from spindlesim.cli import main
+from spindlesim.deck import load_deck, parse_deck
+from spindlesim.runs import DEFAULT_RUN, default_analyses
+
+DECKS = Path(__file__).parents[2] / "decks"
+
+
+def _embedded(name: str, title: bool = True) -> str:
+    text = (resources.files("spindlesim.decks") / f"{name}.yaml").read_text()
+    return text if title else "\n".join(line for line in text.splitlines() if not line.startswith("title:")) + "\n"
+
+
+def _help_rows() -> list[tuple[str, str]]:
+    text = CliRunner().invoke(main, ["run", "--help"]).output
+    block = text.split("in this order:", 1)[1].split("A sweep section", 1)[0]
+    return [tuple(re.split(r"\s{2,}", line.strip(), maxsplit=1)) for line in block.splitlines() if line.strip()]
+
+
+def test_help_text_names_what_runs_without_an_analyses_list():
+    assert _help_rows() == [(", ".join(names), needs) for names, needs in DEFAULT_RUN]
+
+
+def test_a_deck_with_every_section_runs_every_analysis_in_the_help_order():
+    text = (_embedded("spindle") + "rotor_transient: {duration_s: 0.01}\n"
+            + "".join(_embedded(n, title=False) for n in ("bearing", "dtrb", "contact", "transient")))
+    loaded = parse_deck(text)
+    help_names = [n for row, _ in _help_rows() for n in row.split(", ")]
+    assert default_analyses(loaded) == help_names == [n for names, _ in DEFAULT_RUN for n in names]
+
+
+def test_each_rule_of_the_default():
+    linear = load_deck(DECKS / "seed003_spindle_linear.yaml")
+    assert default_analyses(linear) == ["static", "modal", "campbell", "frf", "unbalance"]
+    three_lobe = load_deck(DECKS / "seed003_three_lobe.yaml")
+    assert default_analyses(three_lobe) == ["thermal", "coefficients", "static", "modal", "campbell", "frf",
+                                            "unbalance", "chatter"]
+    # fluid-film bearings without load_N: thermal and coefficients load them from the rotor's statics
+    plain = load_deck(DECKS / "validation" / "jeffcott_plain.yaml")
+    assert default_analyses(plain)[:2] == ["thermal", "coefficients"]
+    assert default_analyses(load_deck(DECKS / "seed001_dtrb_rotor.yaml"))[-1] == "transient"
+    for name in ("bearing", "dtrb", "contact", "transient"):
+        assert default_analyses(parse_deck(_embedded(name))) == [name]
+
+
+def test_a_rotor_without_operating_runs_nothing_and_says_so(tmp_path, caplog):
+    text = _embedded("spindle_linear")
+    text = re.sub(r"(?ms)^operating:.*?(?=^\S)", "", text)
+    assert "operating:" not in text
+    assert default_analyses(parse_deck(text)) == []
+    assert "no 'operating' section" in caplog.text
+    deck = tmp_path / "no_operating.yaml"
+    deck.write_text(text)
+    res = CliRunner().invoke(main, ["run", str(deck), "-o", str(tmp_path / "out")])
+    assert res.exit_code == 2, res.output
+    assert "nothing to run" in res.output
+    assert not (tmp_path / "out").exists()
