@@ -21,10 +21,9 @@ from typing import Callable
 
 import numpy as np
 
-from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
 from .modal import modal_from_matrices
-from .operating import RPM, OperatingState, operating_state, system_matrices
+from .points import OperatingPoints
 from .prefetch import ModalPrefetch
 from .reduced import checked_basis, first_basis
 from .resonance import Crossings, find_crossings
@@ -62,7 +61,7 @@ def mac(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return num / den
 
 
-def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
+def solve_campbell(rotor: "Rotor | OperatingPoints", speeds_rpm: np.ndarray, n_modes: int = 8,
                    progress: Callable[[int, int], None] | None = None,
                    frozen_rpm: float | None = None, exact: bool = False, orders=(1.0,),
                    operating: tuple[float, float] | None = None) -> CampbellResult:
@@ -70,45 +69,49 @@ def solve_campbell(rotor: Rotor, speeds_rpm: np.ndarray, n_modes: int = 8,
     speed, or with ``frozen_rpm`` held at their coefficients of that speed (gyroscopics still vary).
     The modes come from the reduced model (``reduced``), or with ``exact`` from the full state-space
     QR solution at every speed.  The crossings of the excitation ``orders`` with the tracked modes are
-    judged against the ``operating`` range (minimum operating, maximum continuous speed [rpm])."""
-    shaft = assemble_shaft(rotor)
-    guess = _Guess(rotor, shaft, n_modes + max(4, n_modes // 2))
+    judged against the ``operating`` range (minimum operating, maximum continuous speed [rpm]).
+    ``progress(done, total)`` counts the static states (the costly part; the modes follow at once).
+    Given :class:`.points.OperatingPoints`, its assembly, states and reduced basis are reused (a frozen
+    comparison reads the states and the basis of the diagram before it).  A failing speed, or Ctrl-C,
+    ends the diagram at the speeds solved before it (``incomplete_reason``, ``interrupted``)."""
+    points = OperatingPoints.of(rotor)
+    guess = _Guess(points, n_modes + max(4, n_modes // 2))
     try:
-        return _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess, orders, operating)
+        return _campbell(points, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess, orders, operating)
     finally:
         guess.cancel()  # a failure or Ctrl-C before the prefetched modes were used: stop their thread
 
 
-def _campbell(rotor, shaft, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess, orders,
-              operating) -> CampbellResult:
+def _campbell(points, speeds_rpm, n_modes, progress, frozen_rpm, exact, guess, orders, operating) -> CampbellResult:
     speeds = np.asarray(speeds_rpm, float)
-    total = 2 * len(speeds) if frozen_rpm is None else len(speeds)
     done = [0]
 
     def tick():
         done[0] += 1
         if progress is not None:
-            progress(done[0], total)
+            progress(done[0], len(speeds))
 
-    states, stopped = None, ""
+    stopped, interrupted = "", False
     if frozen_rpm is None:
         on_state = guess.add if not exact and len(speeds) >= 3 and usable_cores() >= 2 else None
-        states, stopped, first = static_states(rotor, shaft, speeds, tick, on_state)
-        speeds = speeds[first: first + len(states)]
-        total = 2 * len(speeds)
+        sweep = points.along(speeds, tick, on_state, what="Campbell diagram")
+        speeds, states, stopped, interrupted = sweep.speeds_rpm, sweep.states, sweep.stopped, sweep.interrupted
+        key = ("campbell", float(speeds[0]), float(speeds[-1]))
     else:  # the bearings' state at frozen_rpm, the shaft (gyroscopics) at every speed
-        held = operating_state(rotor, frozen_rpm, shaft)
-        states = [dataclasses.replace(held, speed_rad_s=float(s) * RPM) for s in speeds]
-    model, modal = _modal_at_speeds(rotor, shaft, speeds, n_modes + max(4, n_modes // 2), states, exact,
-                                    n_check=n_modes, guess=guess)
-    tracked = track_modes(modal, len(speeds), n_modes, tick)
+        states = points.held(frozen_rpm, speeds)
+        key = ("campbell", float(speeds[0]), float(speeds[-1]), "held", float(frozen_rpm))
+        if progress is not None:
+            progress(len(speeds), len(speeds))
+    model, modal = _modal_at_speeds(points, speeds, n_modes + max(4, n_modes // 2), states, exact,
+                                    n_check=n_modes, guess=guess, key=key)
+    tracked = track_modes(modal, len(speeds), n_modes)
     freq, zeta, logdec, whirl = tracked.frequency_hz, tracked.damping_ratio, tracked.log_dec, tracked.whirl
     crossings = find_crossings(speeds, freq, zeta, whirl, orders, operating)
     crit = critical_speed_crossings(crossings)
     return CampbellResult(speed_rpm=speeds, frequency_hz=freq, log_dec=logdec, damping_ratio=zeta,
                           whirl=whirl.astype(str), critical_speeds_rpm=crossings.speed_rpm[crit],
                           critical_modes=crossings.mode[crit], model=model, incomplete_reason=stopped,
-                          crossings=crossings)
+                          crossings=crossings, interrupted=interrupted)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -174,38 +177,6 @@ def critical_speed_crossings(c: Crossings) -> np.ndarray:
     return (c.order == 1.0) & c.critical & np.array([w != "backward" for w in c.whirl], bool)
 
 
-def static_states(rotor: Rotor, shaft, speeds: np.ndarray, tick: Callable[[], None] | None = None,
-                  on_state: Callable[[OperatingState, float], None] | None = None):
-    """(static states, "", 0) at every speed, each warm-started from its neighbour's; when one fails,
-    the states before it and the reason ("stopped at ... rpm: ..."); the first speed's failure is
-    raised (nothing to show), except at rest, which is left out with a warning (a fluid film carries
-    no load at 0 rpm: ``--speeds 0:12000:50`` then starts at the first positive speed); the third item is
-    the index of the first speed solved.  ``on_state(state, rpm)`` is told of each state found."""
-    states, st, first = [], None, 0
-    for s in speeds:
-        try:
-            st = operating_state(rotor, s, shaft, start=st)
-        except (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError) as exc:
-            if not states and s <= 0 and len(speeds) > 1:  # e.g. a fluid film carries nothing at rest
-                log.warning("Campbell diagram: %g rpm left out (%s)", s, exc)
-                first += 1
-                if tick is not None:
-                    tick()
-                continue
-            if not states:
-                raise
-            done = (states[0].speed_rad_s / RPM, states[-1].speed_rad_s / RPM)
-            reason = f"stopped at {s:g} rpm (speeds from {done[0]:g} to {done[1]:g} rpm done): {exc}"
-            log.warning("Campbell diagram %s", reason)
-            return states, reason, first
-        states.append(st)
-        if on_state is not None:
-            on_state(st, float(s))
-        if tick is not None:
-            tick()
-    return states, "", first
-
-
 def usable_cores() -> int:
     """The cores this process may run on (its CPU affinity where the platform says, e.g. under taskset)."""
     import os
@@ -215,24 +186,31 @@ def usable_cores() -> int:
     return os.cpu_count() or 1
 
 
-def _modal_at_speeds(rotor: Rotor, shaft, speeds: np.ndarray, n_modes: int, states,
-                     exact: bool = False, n_check: int | None = None, guess: "_Guess | None" = None):
+def _modal_at_speeds(points, speeds: np.ndarray, n_modes: int, states, exact: bool = False,
+                     n_check: int | None = None, guess: "_Guess | None" = None, key: tuple | None = None):
     """(description of the model used, iterator over the modal results at every speed).  The speeds
     are solved on all cores (LAPACK releases the GIL; each thread uses single-threaded BLAS) and
     yielded in speed order for the sequential mode tracking; ``guess`` holds the modes prefetched
-    while the states were found, used when its basis passes the check."""
+    while the states were found, used when its basis passes the check.  The reduced basis is the
+    operating points' (``key``: what it was checked for); a diagram with another key tries the last
+    Campbell basis first (a frozen comparison: the same rotor, other bearing coefficients)."""
     from concurrent.futures import ThreadPoolExecutor
 
+    rotor, shaft = points.rotor, points.shaft
     expand, model = None, "full state space"
     # the prefetched modes are finished first (the check below holds the interpreter: nothing would run
     # beside it) and kept only when their basis passes the check
     prefetched = guess.finish() if guess is not None else None
-    basis = None if exact else checked_basis(rotor, shaft, states, n_modes, n_check,
-                                             first=guess.basis if guess is not None else None)
+    basis = None
+    if not exact:
+        first = guess.basis if guess is not None else None
+        key = ("campbell",) if key is None else key
+        basis = points.basis(key + (n_modes, n_check), lambda: checked_basis(
+            rotor, shaft, list(states), n_modes, n_check, first=first, candidate=points.last_basis("campbell")))
     if prefetched is not None and basis is not None and basis is guess.basis:
         return f"reduced: {basis.size} of {shaft.M.shape[0]} coordinates", iter(prefetched)
     if basis is None:
-        matrices = [functools.partial(system_matrices, rotor, state=st) for st in states]
+        matrices = [functools.partial(points.system, st) for st in states]
     else:
         matrices = [functools.partial(basis.system, st) for st in states]
         expand = basis.T
@@ -272,8 +250,8 @@ class _Guess:
 
     MIN_STATE_S = 2e-3
 
-    def __init__(self, rotor: Rotor, shaft, n_modes: int):
-        self.rotor, self.shaft, self.n_modes = rotor, shaft, n_modes
+    def __init__(self, points, n_modes: int):
+        self.rotor, self.shaft, self.n_modes = points.rotor, points.shaft, n_modes
         self.basis = None
         self._prefetch: ModalPrefetch | None = None
         self._first: list = []  # the first state, held until the second tells how long a state takes

@@ -1,13 +1,14 @@
 """Frequency response H(w) = (-w^2 M + j w C + K)^-1 (seed 003 eq. 23); unbalance response: .unbalance.
 
-The receptance is evaluated through the complete state-space eigendecomposition
-A = V diag(lambda) V^-1 of p' = A p + B f:
+The receptance is the state-space model's (``modal.first_order`` with the input and output DOFs as its
+ports), evaluated by :class:`~spindlesim.chatter.state_space.ToolPointModel`: through the complete
+eigendecomposition A = V diag(lambda) V^-1,
 
-    H_oi(w) = sum_r V[o, r] (V^-1 B)[r, i] / (j w - lambda_r)
+    H_oi(w) = sum_r (C V)[o, r] (V^-1 B)[r, i] / (j w - lambda_r)
 
-which is exact (no modal truncation) and costs one eigendecomposition for any
-number of frequencies. When V is ill-conditioned (defective or rigid-body
-roots) the dynamic stiffness is solved directly at every frequency instead.
+which is exact (no modal truncation) and costs one eigendecomposition for any number of frequencies;
+when V is ill-conditioned (defective or rigid-body roots) the resolvent is solved at every frequency
+instead.  The tool-point FRF of a chatter analysis is the same model with the tool tip's x and y.
 """
 
 from __future__ import annotations
@@ -15,50 +16,39 @@ from __future__ import annotations
 import logging
 
 import numpy as np
-import scipy.linalg as sla
 
+from ..chatter.state_space import ToolPointModel
 from ..model.rotor import Rotor
-from .modal import modal_from_matrices, state_matrix
-from .operating import SingularRotorError, _solve, system_matrices
+from .modal import first_order, modal_from_matrices
+from .operating import SingularRotorError, SystemMatrices, _solve
+from .points import OperatingPoints
 from .resonance import frequency_refinement
 from .results import FrfResult, ModesInRange
 
 log = logging.getLogger(__name__)
-_COND_LIMIT = 1e10
 
 
-def receptance(sysm, out_index: int, in_index: int, omega: np.ndarray) -> np.ndarray:
+def receptance(sysm: SystemMatrices, out_index: int, in_index: int, omega: np.ndarray) -> np.ndarray:
     """Complex receptance [m/N] from force at DOF ``in_index`` to displacement at ``out_index``."""
-    n = sysm.size
-    A = state_matrix(sysm)
-    lam, V = sla.eig(A, check_finite=False)
-    if np.linalg.cond(V) < _COND_LIMIT:
-        b = np.zeros(2 * n)
-        b[n:] = sla.solve(sysm.M, np.eye(n)[:, in_index], assume_a="pos")
-        w = sla.solve(V, b.astype(complex))
-        return (V[out_index, :] * w) @ (1.0 / (1j * omega[None, :] - lam[:, None]))
-    log.info("state-space modes are ill-conditioned; solving the dynamic stiffness directly")
-    e = np.zeros(n, complex)
-    e[in_index] = 1.0
-    out = np.empty(len(omega), complex)
-    for k, w in enumerate(omega):
-        out[k] = np.linalg.solve(-(w**2) * sysm.M + 1j * w * sysm.C + sysm.K, e)[out_index]
-    return out
+    P = np.eye(sysm.size)[:, [in_index, out_index]]  # ports: 0 the input, 1 the output
+    return ToolPointModel(*first_order(sysm, P)).receptance(np.asarray(omega, float))[:, 1, 0]
 
 
-def solve_frf(rotor: Rotor, frequencies_hz: np.ndarray, input_node: int, input_dof: str,
+def solve_frf(rotor: "Rotor | OperatingPoints", frequencies_hz: np.ndarray, input_node: int, input_dof: str,
               output_node: int, output_dof: str, speed_rpm: float | None = None, refine: bool = False) -> FrfResult:
     """Receptance between (1-based) input and output node/DOF at the rotor speed, and the static
     compliance K^-1 there.  With ``refine`` the frequency grid gets points around every mode whose
     half-power band reaches into it (:func:`.resonance.frequency_refinement`), so that no peak falls
     between two points; ``added`` marks them."""
-    speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
-    sysm = system_matrices(rotor, speed)
+    points = OperatingPoints.of(rotor)
+    r = points.rotor
+    speed = r.speed_rpm if speed_rpm is None else speed_rpm
+    sysm = points.system(points.state(speed))
     f = np.asarray(frequencies_hz, float)
-    i_out, i_in = rotor.dofs.index(output_node - 1, output_dof), rotor.dofs.index(input_node - 1, input_dof)
+    i_out, i_in = r.dofs.index(output_node - 1, output_dof), r.dofs.index(input_node - 1, input_dof)
     added = modes = None
     if refine and f.size:
-        modes = modes_in_range(modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, sysm.size, speed),
+        modes = modes_in_range(modal_from_matrices(sysm, r.dofs, r.node_z_m, sysm.size, speed),
                                float(f.min()), float(f.max()))
         f, added = frequency_refinement(f, modes.undamped_frequency_hz, modes.damping_ratio)
         log.info("FRF grid: %d points added around %d modes in range", int(added.sum()), len(modes.frequency_hz))

@@ -21,7 +21,7 @@ import scipy.linalg as sla
 
 from ..model.dofs import DOFS_4
 from ..model.rotor import Rotor
-from .operating import SystemMatrices, system_matrices
+from .operating import SystemMatrices
 from .results import ModalResult
 
 RIGID_BODY_RAD_S = 1e-3 * 2 * np.pi  # roots below 1 mHz are rigid-body roots
@@ -29,14 +29,31 @@ OVERDAMPED_ZETA = 0.999  # damping ratio at or above this: reported with the ove
 AXIAL_SHARE = 0.1  # largest lateral translation below this share of the axial one: an axial mode
 
 
-def state_matrix(sysm: SystemMatrices) -> np.ndarray:
+def first_order(sysm: SystemMatrices, P: np.ndarray | None = None):
+    """The one state-space form of M q'' + C q' + K q = P f, y = P^T q, with x = (q, q'):
+
+        A = [[0, I], [-M^-1 K, -M^-1 C]],   B = [[0], [M^-1 P]],   C_out = [P^T, 0]
+
+    (one solve with M for all three).  Returns (A, B, C_out); B and C_out are None without ``P``."""
     n = sysm.size
-    Minv_K, Minv_C = np.split(sla.solve(sysm.M, np.hstack([sysm.K, sysm.C]), assume_a="pos"), 2, axis=1)
+    rhs = [sysm.K, sysm.C] + ([P] if P is not None else [])
+    sol = sla.solve(sysm.M, np.hstack(rhs), assume_a="pos", check_finite=False)
     A = np.zeros((2 * n, 2 * n))
     A[:n, n:] = np.eye(n)
-    A[n:, :n] = -Minv_K
-    A[n:, n:] = -Minv_C
-    return A
+    A[n:, :n] = -sol[:, :n]
+    A[n:, n:] = -sol[:, n:2 * n]
+    if P is None:
+        return A, None, None
+    B = np.zeros((2 * n, P.shape[1]))
+    B[n:] = sol[:, 2 * n:]
+    C = np.zeros((P.shape[1], 2 * n))
+    C[:, :n] = P.T
+    return A, B, C
+
+
+def state_matrix(sysm: SystemMatrices) -> np.ndarray:
+    """A of :func:`first_order`."""
+    return first_order(sysm)[0]
 
 
 def whirl_of(shapes_xy: np.ndarray, rel_floor: float = 1e-3) -> tuple[list[str], np.ndarray]:
@@ -102,9 +119,13 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     )
 
 
-def solve_modal(rotor: Rotor, speed_rpm: float | None = None, n_modes: int = 8, shaft=None) -> ModalResult:
-    """Damped modes of the rotor at ``speed_rpm`` (default: the deck's operating speed), bearings
-    linearised at the static equilibrium of that speed."""
-    speed = rotor.speed_rpm if speed_rpm is None else speed_rpm
-    sysm = system_matrices(rotor, speed, shaft=shaft)
-    return modal_from_matrices(sysm, rotor.dofs, rotor.node_z_m, n_modes, speed)
+def solve_modal(rotor: "Rotor | OperatingPoints", speed_rpm: float | None = None, n_modes: int = 8) -> ModalResult:
+    """Damped modes at ``speed_rpm`` (default: the rotor's operating speed), bearings linearised at the
+    static equilibrium of that speed (the operating points' state there)."""
+    from .points import OperatingPoints
+
+    points = OperatingPoints.of(rotor)
+    r = points.rotor
+    speed = r.speed_rpm if speed_rpm is None else speed_rpm
+    sysm = points.system(points.state(speed))
+    return modal_from_matrices(sysm, r.dofs, r.node_z_m, n_modes, speed)

@@ -131,18 +131,43 @@ def first_basis(rotor: Rotor, shaft: ShaftMatrices, reference: OperatingState, n
     return None if basis.size > MAX_SHARE * shaft.M.shape[0] else basis
 
 
+class RootsMatch:
+    """Criterion of a Campbell diagram: the first ``n_check`` roots of the reduced model match the full
+    model's within ``FREQ_RTOL`` in frequency and ``ZETA_ATOL`` in damping ratio."""
+
+    def __init__(self, n_check: int):
+        self.n_check = n_check
+
+    def reference(self, rotor: Rotor, states: list[OperatingState]) -> list[np.ndarray]:
+        return [_roots(system_matrices(rotor, state=st), self.n_check) for st in states]
+
+    def accepts(self, basis: "ReducedBasis", states, reference) -> tuple[bool, str]:
+        errors = [_mismatch(exact, _roots(basis.system(st), self.n_check)) for exact, st in zip(reference, states)]
+        df, dz = (max(e[k] for e in errors) for k in (0, 1))
+        return df <= FREQ_RTOL and dz <= ZETA_ATOL, f"frequency within {df:.1e}, damping ratio within {dz:.1e}"
+
+
 def checked_basis(rotor: Rotor, shaft: ShaftMatrices, states: list[OperatingState], n_modes: int,
                   n_check: int | None = None, extra_dofs: tuple[int, ...] = (),
-                  first: ReducedBasis | None = None) -> ReducedBasis | None:
-    """The smallest basis of ``reduced_basis`` (cut-off from ``FACTORS``, built for ``n_modes``) whose
-    first ``n_check`` roots match the full model's at the first and the last of ``states``; None when
-    none does with fewer than ``MAX_SHARE`` of the full model's coordinates (then the reduction would
-    not pay).  ``first``: the first cut-off's basis already built (:func:`first_basis`); it is
-    returned itself when it passes."""
-    n_check = n_modes if n_check is None else n_check
+                  first: ReducedBasis | None = None, criterion=None,
+                  candidate: ReducedBasis | None = None) -> ReducedBasis | None:
+    """The smallest basis of ``reduced_basis`` (cut-off from ``FACTORS``, built for ``n_modes``) that
+    ``criterion`` accepts at the first and the last of ``states`` (default :class:`RootsMatch` of the
+    first ``n_check`` roots); None when none does with fewer than ``MAX_SHARE`` of the full model's
+    coordinates (then the reduction would not pay).  A criterion has ``reference(rotor, states)`` (the
+    full model's answer, computed once) and ``accepts(basis, states, reference) -> (ok, text)``.
+    ``first``: the basis of the first cut-off already built (:func:`first_basis`); it is returned itself
+    when it passes.  ``candidate``: a basis built for another diagram of the rotor (a frozen comparison's
+    Campbell basis), tried before any is built and returned when it passes."""
+    criterion = criterion if criterion is not None else RootsMatch(n_modes if n_check is None else n_check)
     check = [states[0]] if len(states) == 1 else [states[0], states[-1]]
-    full = [_roots(system_matrices(rotor, state=st), n_check) for st in check]
+    reference = criterion.reference(rotor, check)
     size = shaft.M.shape[0]
+    if candidate is not None and candidate.size <= MAX_SHARE * size:
+        ok, text = criterion.accepts(candidate, check, reference)
+        if ok:
+            log.info("reduced model: the %d coordinates of the diagram before (%s)", candidate.size, text)
+            return candidate
     for factor in FACTORS:
         if first is not None and factor == FACTORS[0] and not extra_dofs:
             basis = first
@@ -150,13 +175,11 @@ def checked_basis(rotor: Rotor, shaft: ShaftMatrices, states: list[OperatingStat
             basis = reduced_basis(rotor, shaft, states[0], n_modes, extra_dofs, factor=factor)
         if basis.size > MAX_SHARE * size:
             break
-        errors = [_mismatch(exact, _roots(basis.system(st), n_check)) for exact, st in zip(full, check)]
-        df, dz = (max(e[k] for e in errors) for k in (0, 1))
-        log.debug("reduced basis of %d (cut-off %g x): frequency %.2e, damping ratio %.2e", basis.size, factor, df, dz)
-        if df <= FREQ_RTOL and dz <= ZETA_ATOL:
-            log.info("reduced model: %d of %d coordinates (frequency within %.1e, damping ratio within %.1e "
-                     "of the full model at %g and %g rpm)", basis.size, size, df, dz,
-                     check[0].speed_rad_s * 30 / np.pi, check[-1].speed_rad_s * 30 / np.pi)
+        ok, text = criterion.accepts(basis, check, reference)
+        log.debug("reduced basis of %d (cut-off %g x): %s", basis.size, factor, text)
+        if ok:
+            log.info("reduced model: %d of %d coordinates (%s of the full model at %g and %g rpm)", basis.size,
+                     size, text, check[0].speed_rad_s * 30 / np.pi, check[-1].speed_rad_s * 30 / np.pi)
             return basis
     log.info("the reduced model needs more than %d of %d coordinates for the demanded accuracy: full model used",
              int(MAX_SHARE * size), size)

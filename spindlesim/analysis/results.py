@@ -60,6 +60,7 @@ class CampbellResult:
     model: str = "full state space"  # or "reduced: m of n coordinates" (analysis/reduced.py)
     incomplete_reason: str = ""  # set when a speed's static state failed: the speeds before it only
     crossings: Crossings | None = None  # every excitation order against every tracked mode, API 684 judged
+    interrupted: bool = False  # stopped by Ctrl-C (incomplete_reason says where)
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..model.rotor import Rotor
-from .operating import EquilibriumError, SingularRotorError, _solve, operating_state, system_matrices
+from .operating import EquilibriumError, SingularRotorError, _solve
+from .points import OperatingPoints
 from .results import StaticResult
 
 
@@ -19,18 +20,20 @@ def _component(rotor: Rotor, q: np.ndarray, dof: str) -> np.ndarray:
     return q[rotor.dofs.component(dof)] if rotor.dofs.has(dof) else np.zeros(rotor.n_nodes)
 
 
-def solve_static(rotor: Rotor, stiffness_node: int = 0, stiffness_dof: str = "x",
+def solve_static(rotor: "Rotor | OperatingPoints", stiffness_node: int = 0, stiffness_dof: str = "x",
                  speed_rpm: float | None = None) -> StaticResult:
     """Static equilibrium at ``speed_rpm`` (default: the rotor's); bearing reactions on the shaft; the
     static stiffness at (``stiffness_node``, ``stiffness_dof``) and, with a tool, at the tool tip (x, y
     and, where the model has it, axial z)."""
-    st = operating_state(rotor, speed_rpm)
+    points = OperatingPoints.of(rotor)
+    rotor = points.rotor
+    st = points.state(speed_rpm)
     q = st.q
     disp = np.stack([_component(rotor, q, "x"), _component(rotor, q, "y")], axis=1)
     slope = np.stack([_component(rotor, q, "theta_x"), _component(rotor, q, "theta_y")], axis=1)
     forces = np.array([-w[:2] for w in st.loads]).reshape(-1, 2)
     applied = np.array([st.Q[rotor.dofs.component("x")].sum(), st.Q[rotor.dofs.component("y")].sum()])
-    K = system_matrices(rotor, state=st).K
+    K = points.system(st).K
     compliance = _compliance(rotor, K, stiffness_node, stiffness_dof, held=True)
     if compliance is None:
         raise EquilibriumError(f"no positive static compliance at node {stiffness_node + 1} {stiffness_dof}")

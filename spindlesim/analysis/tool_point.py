@@ -25,13 +25,13 @@ from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-import scipy.linalg as sla
 
 from ..chatter.state_space import ToolPointModel
-from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
-from .operating import OperatingState, SystemMatrices, operating_state, system_matrices
-from .reduced import FACTORS, MAX_SHARE, reduced_basis
+from .modal import first_order
+from .operating import EquilibriumError, OperatingState, SystemMatrices, system_matrices
+from .points import OperatingPoints
+from .reduced import checked_basis
 
 log = logging.getLogger(__name__)
 
@@ -58,87 +58,78 @@ def point_dofs(rotor: Rotor, node: int | None) -> tuple[int, np.ndarray]:
 
 
 def state_space(sysm: SystemMatrices, P: np.ndarray, source: str = "") -> ToolPointModel:
-    """The module note's (A, B, C) of M, C, K with force/response map ``P`` [n, 2]."""
-    n = sysm.size
-    MinvKCP = sla.solve(sysm.M, np.hstack([sysm.K, sysm.C, P]), assume_a="pos", check_finite=False)
-    A = np.zeros((2 * n, 2 * n))
-    A[:n, n:] = np.eye(n)
-    A[n:, :n] = -MinvKCP[:, :n]
-    A[n:, n:] = -MinvKCP[:, n:2 * n]
-    B = np.zeros((2 * n, 2))
-    B[n:] = MinvKCP[:, 2 * n:]
-    C = np.zeros((2, 2 * n))
-    C[:, :n] = P.T
-    return ToolPointModel(A, B, C, source)
+    """The module note's (A, B, C) of M, C, K with force/response map ``P`` [n, 2] (modal.first_order)."""
+    return ToolPointModel(*first_order(sysm, P), source)
 
 
-def tool_point_model(rotor: Rotor, speed_rpm: float | None = None, node: int | None = None) -> ToolPointModel:
+def tool_point_model(rotor: "Rotor | OperatingPoints", speed_rpm: float | None = None,
+                     node: int | None = None) -> ToolPointModel:
     """The full model's tool-point state space at one speed (default: the rotor's)."""
-    speed = rotor.speed_rpm if speed_rpm is None else float(speed_rpm)
-    n, tip = point_dofs(rotor, node)
-    sysm = system_matrices(rotor, speed)
+    points = OperatingPoints.of(rotor)
+    r = points.rotor
+    speed = r.speed_rpm if speed_rpm is None else float(speed_rpm)
+    n, tip = point_dofs(r, node)
+    sysm = points.system(points.state(speed))
     return state_space(sysm, np.eye(sysm.size)[:, tip], f"rotor model, node {n}, {speed:g} rpm")
 
 
-def tool_point_series(rotor: Rotor, speeds_rpm, node: int | None = None, exact: bool = False,
-                      progress: Callable[[int, int], None] | None = None) -> ToolPointSeries:
-    """Tool-point models at every speed (static states warm-started from the neighbouring speed)."""
-    speeds = np.asarray(speeds_rpm, float)
-    n_node, tip = point_dofs(rotor, node)
-    shaft = assemble_shaft(rotor)
-    total = 2 * len(speeds)
-    states, st = [], None
-    for k, s in enumerate(speeds):
-        st = operating_state(rotor, s, shaft, start=st)
-        states.append(st)
-        if progress is not None:
-            progress(k + 1, total)
-    size = shaft.M.shape[0]
-    eye = np.eye(size)[:, tip]
+class ToolPointModesMatch:
+    """Criterion of the reduced basis for tool-point models (module note): the dominant modes at the
+    point have reduced twins within ``FREQ_RTOL`` in frequency and ``PEAK_RTOL`` in peak compliance."""
 
-    def full(st):
-        return state_space(system_matrices(rotor, state=st), eye)
+    def __init__(self, tip: np.ndarray):
+        self.tip = np.asarray(tip)
 
-    basis, model = None, "full state space"
-    if not exact and len(speeds) > 2:
-        basis = _checked_basis(rotor, shaft, states, tip, full)
-        if basis is not None:
-            model = f"reduced: {basis.size} of {size} coordinates"
-    models = []
-    for k, (s, st) in enumerate(zip(speeds, states)):
-        if basis is None:
-            m = full(st)
-        else:
-            m = state_space(basis.system(st), basis.T[tip].T)
-        models.append(ToolPointModel(m.A, m.B, m.C, f"rotor model ({model}), node {n_node}, {s:g} rpm"))
-        if progress is not None:
-            progress(len(speeds) + k + 1, total)
-    return ToolPointSeries(speeds, tuple(models), n_node, model, tuple(states))
+    def reference(self, rotor: Rotor, states) -> list:
+        eye = np.eye(rotor.dofs.size)[:, self.tip]
+        return [state_space(system_matrices(rotor, state=st), eye).significant_modes(rel=DOMINANT) for st in states]
 
-
-def _checked_basis(rotor, shaft, states, tip, full):
-    """The smallest reduced basis (cut-offs of ``reduced.FACTORS``) whose dominant tool-point modes at
-    the first and last speed match the full model's (module note); None if none pays."""
-    check = [states[0], states[-1]]
-    reference = [full(st).significant_modes(rel=DOMINANT) for st in check]
-    size = shaft.M.shape[0]
-    for factor in FACTORS:
-        basis = reduced_basis(rotor, shaft, states[0], 8, tuple(tip), factor=factor)
-        if basis.size > MAX_SHARE * size:
-            break
-        P = basis.T[tip].T
+    def accepts(self, basis, states, reference) -> tuple[bool, str]:
+        P = basis.T[self.tip].T
         df = dp = 0.0
-        for st, modes in zip(check, reference):
+        for st, modes in zip(states, reference):
             reduced = state_space(basis.system(st), P).modes()
             for m in modes:
                 twin = min(reduced, key=lambda r: abs(r.frequency_hz - m.frequency_hz))
                 df = max(df, abs(twin.frequency_hz / m.frequency_hz - 1))
                 dp = max(dp, abs(twin.peak_compliance_m_N / m.peak_compliance_m_N - 1))
-        log.debug("tool-point model, reduced basis of %d: frequency %.1e, peak compliance %.1e", basis.size, df, dp)
-        if df <= FREQ_RTOL and dp <= PEAK_RTOL:
-            log.info("tool-point model: reduced, %d of %d coordinates (dominant modes within %.1e in frequency, "
-                     "%.1e in peak compliance at the first and last speed)", basis.size, size, df, dp)
-            return basis
-    log.info("tool-point model: full (a reduced one as accurate needs more than %d of %d coordinates)",
-             int(MAX_SHARE * size), size)
-    return None
+        return df <= FREQ_RTOL and dp <= PEAK_RTOL, (f"dominant tool-point modes within {df:.1e} in frequency, "
+                                                     f"{dp:.1e} in peak compliance")
+
+
+def tool_point_series(rotor: "Rotor | OperatingPoints", speeds_rpm, node: int | None = None, exact: bool = False,
+                      progress: Callable[[int, int], None] | None = None) -> ToolPointSeries:
+    """Tool-point models at every speed (static states warm-started from the neighbouring speed)."""
+    points = OperatingPoints.of(rotor)
+    r = points.rotor
+    speeds = np.asarray(speeds_rpm, float)
+    n_node, tip = point_dofs(r, node)
+    total = 2 * len(speeds)
+    done = [0]
+
+    def tick():
+        done[0] += 1
+        if progress is not None:
+            progress(done[0], total)
+
+    sweep = points.along(speeds, tick, what="tool-point models")
+    if sweep.interrupted:
+        raise KeyboardInterrupt
+    if sweep.stopped or sweep.first:
+        raise EquilibriumError(f"tool-point models: {sweep.stopped or 'no static state at 0 rpm'}")
+    states = sweep.states
+    size = points.shaft.M.shape[0]
+    basis, model = None, "full state space"
+    if not exact and len(speeds) > 2:
+        check = (float(speeds[0]), float(speeds[-1]))
+        basis = points.basis(("tool point", n_node, check), lambda: checked_basis(
+            r, points.shaft, list(states), 8, extra_dofs=tuple(tip), criterion=ToolPointModesMatch(tip)))
+        if basis is not None:
+            model = f"reduced: {basis.size} of {size} coordinates"
+    eye = np.eye(size)[:, tip]
+    models = []
+    for s, st in zip(speeds, states):
+        m = state_space(points.system(st), eye) if basis is None else state_space(basis.system(st), basis.T[tip].T)
+        models.append(ToolPointModel(m.A, m.B, m.C, f"rotor model ({model}), node {n_node}, {s:g} rpm"))
+        tick()
+    return ToolPointSeries(speeds, tuple(models), n_node, model, tuple(states))

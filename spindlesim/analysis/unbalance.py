@@ -28,11 +28,11 @@ import logging
 import numpy as np
 import scipy.linalg as sla
 
-from ..fe.assembly import assemble_shaft
 from ..model.rotor import Rotor
-from .campbell import _modal_at_speeds, mac, static_states, track_modes
+from .campbell import _modal_at_speeds, mac, track_modes
 from .modal import modal_from_matrices
-from .operating import EquilibriumError, operating_state, system_matrices
+from .operating import EquilibriumError
+from .points import OperatingPoints
 from .resonance import MIN_HALF_WIDTH, UNDAMPED_ZETA, crossings_from, find_crossings, half_power_af, refine_grid
 from .results import UnbalanceResonances, UnbalanceResult
 
@@ -43,13 +43,14 @@ MODE_REACH = 1.25
 CROSSING_TOL = 1e-3
 
 
-def solve_unbalance(rotor: Rotor, speeds_rpm: np.ndarray, node: int, unbalance_kg_m: float,
+def solve_unbalance(rotor: "Rotor | OperatingPoints", speeds_rpm: np.ndarray, node: int, unbalance_kg_m: float,
                     phase_deg: float, output_node: int, output_dof: str, refine: bool = False,
                     operating: tuple[float, float] | None = None) -> UnbalanceResult:
     """Response to the unbalance m e (``unbalance_kg_m``) at (1-based) ``node`` over ``speeds_rpm``; with
     ``refine`` the speeds are sorted and refined at every 1x crossing in range (module note), the
     crossings judged against the ``operating`` range (minimum operating, maximum continuous speed)."""
-    shaft = assemble_shaft(rotor)
+    points = OperatingPoints.of(rotor)
+    rotor = points.rotor
     speeds = np.asarray(speeds_rpm, float)
     ix, iy = rotor.dofs.index(node - 1, "x"), rotor.dofs.index(node - 1, "y")
     force = unbalance_kg_m * np.exp(1j * np.deg2rad(phase_deg))
@@ -57,21 +58,23 @@ def solve_unbalance(rotor: Rotor, speeds_rpm: np.ndarray, node: int, unbalance_k
 
     def response(st):
         W = st.speed_rad_s
-        sysm = system_matrices(rotor, state=st)
+        sysm = points.system(st)
         F = np.zeros(sysm.size, complex)
         F[ix], F[iy] = force * W**2, -1j * force * W**2
         return sla.solve(-(W**2) * sysm.M + 1j * W * sysm.C + sysm.K, F, check_finite=False)
 
     added = resonances = None
     if not refine:
-        q = [response(operating_state(rotor, s, shaft)) for s in speeds]
+        q = [response(points.state(s)) for s in speeds]
     else:
         speeds = np.unique(speeds)
-        states, stopped, first = static_states(rotor, shaft, speeds)
-        if stopped:
-            raise EquilibriumError(f"unbalance response {stopped}")
-        speeds = speeds[first:first + len(states)]
-        found, at_crossings = _crossings(rotor, shaft, speeds, states, operating)
+        sweep = points.along(speeds, what="unbalance response")
+        if sweep.interrupted:
+            raise KeyboardInterrupt
+        if sweep.stopped:
+            raise EquilibriumError(f"unbalance response {sweep.stopped}")
+        speeds, states = sweep.speeds_rpm, sweep.states
+        found, at_crossings = _crossings(points, speeds, states, operating)
         speeds_all, added = refine_grid(speeds, found.speed_rpm, _half_widths(found), ())
         keep = ~(added & np.isin(speeds_all, found.speed_rpm[np.abs(found.damping_ratio) < UNDAMPED_ZETA]))
         speeds_all, added = speeds_all[keep], added[keep]  # an undamped crossing: its band, not the singular centre
@@ -84,7 +87,7 @@ def solve_unbalance(rotor: Rotor, speeds_rpm: np.ndarray, node: int, unbalance_k
                 all_states.append(by_speed[s])
             else:
                 near = starts[int(np.argmin(np.abs(known - s)))]
-                all_states.append(operating_state(rotor, s, shaft, start=near))
+                all_states.append(points.state(s, start=near))
         speeds = speeds_all
         q = [response(st) for st in all_states]
         log.info("unbalance: %d speeds added around %d 1x crossings", int(added.sum()), len(found))
@@ -106,18 +109,18 @@ def _half_widths(c) -> np.ndarray:
     return np.clip(np.nan_to_num(w, nan=np.inf), MIN_HALF_WIDTH * c.speed_rpm, 0.25 * c.speed_rpm)
 
 
-def _crossings(rotor: Rotor, shaft, speeds: np.ndarray, states, operating):
+def _crossings(points, speeds: np.ndarray, states, operating):
     """(the 1x crossings of the modes tracked over ``speeds``, the static state at each) (module note,
     steps 1 and 2)."""
+    rotor = points.rotor
     if len(speeds) < 2:
         return crossings_from([], operating), []
-    top = modal_from_matrices(system_matrices(rotor, state=states[-1]), rotor.dofs, rotor.node_z_m,
-                              2 * rotor.dofs.size, speeds[-1])
-    low = modal_from_matrices(system_matrices(rotor, state=states[0]), rotor.dofs, rotor.node_z_m,
-                              2 * rotor.dofs.size, speeds[0])
+    top = modal_from_matrices(points.system(states[-1]), rotor.dofs, rotor.node_z_m, 2 * rotor.dofs.size, speeds[-1])
+    low = modal_from_matrices(points.system(states[0]), rotor.dofs, rotor.node_z_m, 2 * rotor.dofs.size, speeds[0])
     reach = MODE_REACH * speeds[-1] / 60.0
     n = max(int(np.sum(top.frequency_hz <= reach)), int(np.sum(low.frequency_hz <= reach))) + 2
-    _, modal = _modal_at_speeds(rotor, shaft, speeds, n + max(4, n // 2), states, n_check=n)
+    _, modal = _modal_at_speeds(points, speeds, n + max(4, n // 2), states, n_check=n,
+                                key=("unbalance", float(speeds[0]), float(speeds[-1])))
     tr = track_modes(modal, len(speeds), n, keep_shapes=True)
     rough = find_crossings(speeds, tr.frequency_hz, tr.damping_ratio, tr.whirl, (1.0,))
     rows = []
@@ -125,23 +128,24 @@ def _crossings(rotor: Rotor, shaft, speeds: np.ndarray, states, operating):
         k = int(rough.mode[j])
         i = int(np.searchsorted(speeds, rough.speed_rpm[j], side="right") - 1)
         i = min(max(i, 0), len(speeds) - 2)
-        sc, fc, zc, wc, st = _locate(rotor, shaft, speeds, states, tr, i, k)
+        sc, fc, zc, wc, st = _locate(points, speeds, states, tr, i, k)
         rows.append((sc, 1.0, k, fc, zc, wc, float(rough.slope_hz_per_rpm[j]), st))
     rows.sort(key=lambda r: r[0])
     return crossings_from([r[:7] for r in rows], operating), [r[7] for r in rows]
 
 
-def _locate(rotor: Rotor, shaft, speeds, states, tr, i: int, k: int):
+def _locate(points, speeds, states, tr, i: int, k: int):
     """(speed, frequency, damping ratio, whirl, static state) where tracked mode ``k`` crosses the 1x
     line between speeds i and i + 1: Illinois (regula falsi with halving) on the full model."""
+    rotor = points.rotor
     ref = tr.shapes[i, k] if np.all(np.isfinite(tr.shapes[i, k])) else tr.shapes[i + 1, k]
     n_modes = tr.frequency_hz.shape[1] + 4
     near = [states[i]]
 
     def g(s):
-        st = operating_state(rotor, s, shaft, start=near[0])
+        st = points.state(s, start=near[0])
         near[0] = st
-        m = modal_from_matrices(system_matrices(rotor, state=st), rotor.dofs, rotor.node_z_m, n_modes, s)
+        m = modal_from_matrices(points.system(st), rotor.dofs, rotor.node_z_m, n_modes, s)
         shapes = m.mode_shape.reshape(len(m.frequency_hz), -1)
         f_ref = np.interp(s, speeds[i:i + 2], tr.frequency_hz[i:i + 2, k])
         rel = np.abs(m.frequency_hz - f_ref) / max(f_ref, 1e-12)

@@ -141,9 +141,9 @@ def _print_results(paths: list, lines: list[str], data: dict) -> None:
 
 def _operating_text(deck) -> str:
     """The deck's operating point (speed, load, oil temperature) for the summary titles, or ""."""
-    from ..output.transient_plots import operating_point
+    from ..deck.describe import operating_text
 
     rig = getattr(deck, "transient", None)
     speed = deck.operating.speed_rpm if deck.operating is not None else getattr(rig, "speed_rpm", None)
-    text = ", ".join(p for p in (f"{speed:g} rpm" if speed is not None else "", operating_point(deck)) if p)
+    text = ", ".join(p for p in (f"{speed:g} rpm" if speed is not None else "", operating_text(deck)) if p)
     return f"base deck {text}; " if text else ""

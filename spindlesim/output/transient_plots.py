@@ -25,30 +25,6 @@ _PASS_COLORS = ("tab:red", "tab:green", "tab:purple", "tab:brown")
 _LENGTH_UNITS = ((1e-3, "mm"), (1e-6, "um"), (1e-9, "nm"), (1e-12, "pm"))
 
 
-def operating_point(deck) -> str:
-    """Applied load and oil temperature of a deck, for the titles ("" when the deck gives neither)."""
-    parts = []
-    rig = getattr(deck, "transient", None)
-    if rig is not None and deck.shaft is None and getattr(deck, "journal", None) is None:
-        load = getattr(getattr(rig, "shaft", None), "radial_load_N", None)
-        if load:
-            parts.append(f"radial load {load:g} N")
-    else:
-        loads = list(getattr(deck, "loads", None) or [])
-        radial = math.hypot(sum(ld.fx_N for ld in loads), sum(ld.fy_N for ld in loads))
-        axial = sum(ld.fz_N for ld in loads)
-        if radial or axial:
-            parts.append("load " + ", ".join(f"{v:.4g} N {k}" for k, v in (("radial", radial), ("axial", axial)) if v))
-        op = getattr(deck, "operating", None)
-        if op is not None and getattr(op, "gravity", False):
-            parts.append("gravity")
-    temps = sorted({b.oil.inlet_C for b in getattr(deck, "bearings", ()) if getattr(b, "oil", None) is not None
-                    and getattr(b.oil, "inlet_C", None) is not None})
-    if temps:
-        parts.append("oil inlet " + "/".join(f"{t:g}" for t in temps) + " degC")
-    return ", ".join(parts)
-
-
 def _speed_text(res: TransientResult) -> str:
     sp = res.speed_rpm
     if not sp.size:

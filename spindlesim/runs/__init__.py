@@ -17,6 +17,7 @@ import logging
 from pathlib import Path
 from typing import Any, Callable
 
+from ..deck.describe import FLUID_FILM_TYPES, bearing_entries
 from ..deck.loader import ANALYSES, LoadedDeck
 from ..output import drawing
 from ..output.hdf5 import RunInfo
@@ -100,7 +101,7 @@ def default_analyses(loaded: LoadedDeck) -> list[str]:
     if (d.shaft is not None or d.journal is not None) and d.operating is None:
         log.warning("the deck has a rotor but no 'operating' section: the rotor analyses are not run")
     has = {
-        "thermal": d.operating is not None and any(b.type in ("three_lobe", "plain") for b in d.bearings),
+        "thermal": d.operating is not None and bool(bearing_entries(d, *FLUID_FILM_TYPES)),
         "static": rotor,
         "unbalance": rotor and d.unbalance is not None,
         "transient": (rotor and d.rotor_transient is not None) or d.transient is not None,

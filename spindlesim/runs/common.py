@@ -20,3 +20,21 @@ def value_range(r) -> np.ndarray:
     if isinstance(r, (list, tuple, np.ndarray)):
         return np.asarray(r, float)
     return np.linspace(r.start, r.stop, r.count)
+
+
+_POINTS: dict[int, tuple] = {}
+
+
+def operating_points(loaded):
+    """The deck's rotor at its operating points (:class:`~spindlesim.analysis.points.OperatingPoints`),
+    shared by every analysis of one run: the shaft assembled once, each static state solved once.  One
+    deck is kept at a time (a run or a sweep case reads one)."""
+    got = _POINTS.get(id(loaded))
+    if got is None or got[0] is not loaded:
+        from ..analysis.points import OperatingPoints
+        from ..model.build import build_rotor
+
+        _POINTS.clear()
+        got = (loaded, OperatingPoints(build_rotor(loaded.deck)))
+        _POINTS[id(loaded)] = got
+    return got[1]

@@ -23,9 +23,10 @@ from typing import Any
 
 import numpy as np
 
+from ..deck.describe import FLUID_FILM_TYPES, bearing_entries
+
 log = logging.getLogger(__name__)
 
-FLUID_TYPES = ("three_lobe", "plain")
 XY, FXY = ("x", "y"), ("Fx", "Fy")
 LOAD_FRAME = ("along_load", "ahead_of_load")
 SOMMERFELD = "mu N D L / (psi^2 W), psi = 2 Cp / D"
@@ -34,7 +35,7 @@ SOMMERFELD = "mu N D L / (psi^2 W), psi = 2 Cp / D"
 def _fluid_bearings(loaded: Any):
     from ..bearings.fluidfilm.section import build
 
-    entries = [b for b in loaded.deck.bearings if b.type in FLUID_TYPES]
+    entries = [b for _, b in bearing_entries(loaded.deck, *FLUID_FILM_TYPES)]
     if not entries:
         raise ValueError("the deck has no fluid-film bearing (type three_lobe or plain)")
     return [build(e) for e in entries]
@@ -45,17 +46,16 @@ def _static_loads(loaded: Any, bearings: list, om: float) -> dict[str, np.ndarra
     it at the rotor's static equilibrium at this speed (a located deck error without a rotor)."""
     if all(b.load_N is not None for b in bearings):
         return {b.name: None for b in bearings}
-    from ..analysis.operating import operating_state
     from ..deck import DeckError, require_rotor
-    from ..model.build import build_rotor
+    from .common import operating_points
 
     d = loaded.deck
     if d.shaft is None and d.journal is None:
         raise DeckError([loaded.issue(("bearings", i), f"bearing {e.name!r} has no load_N and the deck no rotor "
                                       "(shaft or journal) whose static equilibrium would load it: give load_N")
-                         for i, e in enumerate(d.bearings) if e.type in FLUID_TYPES and e.load_N is None])
+                         for i, e in bearing_entries(d, *FLUID_FILM_TYPES) if e.load_N is None])
     require_rotor(loaded, "thermal equilibrium from the rotor's static loads")
-    state = operating_state(build_rotor(d), om * 30.0 / math.pi)
+    state = operating_points(loaded).state(om * 30.0 / math.pi)
     return {b.name: None if b.load_N is not None else state.load_of(b.name) for b in bearings}
 
 

@@ -9,9 +9,8 @@ import numpy as np
 
 from ..deck.document import NodeDof
 from ..deck.loader import require_rotor, require_section
-from ..model.build import build_rotor
 from ..output.drawing import draw
-from .common import first, plots_wanted, value_range
+from .common import first, operating_points, plots_wanted, value_range
 
 log = logging.getLogger(__name__)
 
@@ -23,9 +22,9 @@ def run_static(loaded, outdir, run, opts, progress):
 
     require_rotor(loaded, "static")
     d = loaded.deck
-    rotor = build_rotor(d, speed_rpm=opts.get("speed_rpm"))
+    points = operating_points(loaded)
     at = d.static.stiffness_at
-    res = solve_static(rotor, at.node - 1, at.dof)
+    res = solve_static(points, at.node - 1, at.dof, speed_rpm=first(opts.get("speed_rpm"), d.operating.speed_rpm))
     log.info("static stiffness at node %d %s: %.4g N/um", at.node, at.dof, res.static_stiffness_N_m / 1e6)
     paths = [write_static(outdir / "static.h5", run, res)]
     if plots_wanted(opts):
@@ -40,9 +39,10 @@ def run_modal(loaded, outdir, run, opts, progress):
 
     require_rotor(loaded, "modal")
     d = loaded.deck
-    speed = first(opts.get("speed_rpm"), d.modal.speed_rpm)
-    rotor = build_rotor(d, speed_rpm=speed)
-    res = solve_modal(rotor, n_modes=first(opts.get("modes"), d.modal.modes))
+    speed = first(opts.get("speed_rpm"), d.modal.speed_rpm, d.operating.speed_rpm)
+    points = operating_points(loaded)
+    rotor = points.rotor
+    res = solve_modal(points, speed, n_modes=first(opts.get("modes"), d.modal.modes))
     paths = [write_modal(outdir / "modal.h5", run, res)]
     if plots_wanted(opts):
         at: dict[float, str] = {}  # one mark per bearing position, named by the first bearing there
@@ -62,16 +62,16 @@ def run_campbell(loaded, outdir, run, opts, progress):
     d = loaded.deck
     speeds = opts.get("speeds_rpm")
     speeds = value_range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
-    rotor = build_rotor(d)
+    points = operating_points(loaded)
     modes = first(opts.get("modes"), d.campbell.modes)
     orders, operating = excitation_orders(d), d.operating.speed_range_rpm
-    res = solve_campbell(rotor, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")),
+    res = solve_campbell(points, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")),
                          orders=orders, operating=operating)
     frozen_rpm = d.campbell.compare_frozen_rpm
     frozen = None
-    if frozen_rpm is not None:
-        frozen = solve_campbell(rotor, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
-                                operating=operating)
+    if frozen_rpm is not None and not res.interrupted:  # the same assembly, states and basis
+        frozen = solve_campbell(points, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
+                                operating=operating, exact=bool(opts.get("exact")))
     if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
         run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
     paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm)]
@@ -82,7 +82,7 @@ def run_campbell(loaded, outdir, run, opts, progress):
     if res.incomplete_reason:
         from .status import IncompleteRun
 
-        raise IncompleteRun(res.incomplete_reason, paths)
+        raise IncompleteRun(res.incomplete_reason, paths, interrupted=res.interrupted)
     return paths
 
 
@@ -101,16 +101,18 @@ def run_frf(loaded, outdir, run, opts, progress):
     require_rotor(loaded, "frf")
     d = loaded.deck
     fr = d.frf
-    rotor = build_rotor(d, speed_rpm=first(opts.get("speed_rpm"), fr.speed_rpm))
+    points = operating_points(loaded)
+    rotor = points.rotor
+    speed = first(opts.get("speed_rpm"), fr.speed_rpm, d.operating.speed_rpm)
     tip = rotor.tool_tip + 1 if rotor.tool_tip is not None else 1
     inp, out = fr.input or NodeDof(node=tip, dof="x"), fr.output or NodeDof(node=tip, dof="x")
     f = value_range(fr.frequencies_hz)
-    res = solve_frf(rotor, f, inp.node, inp.dof, out.node, out.dof, refine=True)
+    res = solve_frf(points, f, inp.node, inp.dof, out.node, out.dof, speed_rpm=speed, refine=True)
     tool = None
     if rotor.tool_tip is not None:  # the tool point's 2 x 2 receptance (xx, xy; yx, yy), on the refined grid
         from ..analysis.tool_point import tool_point_model
 
-        tool = tool_point_model(rotor).frf(res.frequency_hz)
+        tool = tool_point_model(points, speed).frf(res.frequency_hz)
     paths = [write_frf(outdir / "frf.h5", run, res, tool)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "frf_magnitude_phase.png", frf_magnitude_phase_figure, res))
@@ -119,7 +121,7 @@ def run_frf(loaded, outdir, run, opts, progress):
             from ..chatter.plots import frf_figure
 
             paths.append(draw(outdir / "frf_tool_point.png", frf_figure, tool, terms=("xx", "yy", "xy"),
-                              title=f"Tool point (node {tip}) at {rotor.speed_rpm:g} rpm"))
+                              title=f"Tool point (node {tip}) at {speed:g} rpm"))
     return paths
 
 
@@ -131,8 +133,7 @@ def run_unbalance(loaded, outdir, run, opts, progress):
     require_rotor(loaded, "unbalance")
     d = loaded.deck
     u = require_section(loaded, "unbalance", "unbalance", "node, amount_g_mm, output, speeds_rpm")
-    rotor = build_rotor(d)
-    res = solve_unbalance(rotor, value_range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
+    res = solve_unbalance(operating_points(loaded), value_range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
                           u.output.node, u.output.dof, refine=True, operating=d.operating.speed_range_rpm)
     paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
     if plots_wanted(opts):

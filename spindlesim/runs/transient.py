@@ -19,7 +19,8 @@ from typing import Any
 import numpy as np
 
 from ..deck.loader import require_rotor
-from .common import first, plots_wanted
+from ..deck.describe import bearing_entries, operating_text
+from .common import first, operating_points, plots_wanted
 from .status import IncompleteRun, is_interrupt
 
 log = logging.getLogger(__name__)
@@ -92,7 +93,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     from ..analysis.modal import solve_modal
     from ..analysis.transient.engine import simulate
     from ..output.figures import save_figure
-    from ..output.transient_plots import (bearing_output_figure, operating_point, orbit_figure, poincare_figure,
+    from ..output.transient_plots import (bearing_output_figure, orbit_figure, poincare_figure,
                                           run_up_figure, spectrum_figure, time_figure)
     from ..output.transient_writer import write_transient
 
@@ -116,7 +117,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
         modal_hz = None
     paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz)]
     if plots_wanted(opts):
-        op = operating_point(d)
+        op = operating_text(d)
         figs = {"transient_time.png": time_figure(res, op), "transient_orbit.png": orbit_figure(res, op),
                 "transient_spectrum.png": spectrum_figure(res, modal_hz, op),
                 "transient_poincare.png": poincare_figure(res, op)}
@@ -138,20 +139,19 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
 
 def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:
     """Contact pressure of the most loaded roller of each DTRB at the static state (seed 001 eqs. 42-46)."""
-    entries = [e for e in loaded.deck.bearings if e.type == "dtrb"]
+    entries = [e for _, e in bearing_entries(loaded.deck, "dtrb")]
     if not entries:
         return []
-    from ..analysis.operating import operating_state
-    from ..bearings.dtrb.roller_pressure import most_loaded_roller_pressure
+    from ..bearings.dtrb.roller_pressure import roller_pressure_under
     from ..contact.plots import pressure_map_figure, roller_profile_figure
     from ..output.figures import save_figure
     from .contact import write_contact
 
-    st = operating_state(rotor)
+    st = operating_points(loaded).state(rotor.speed_rpm)  # the run's shared static state
     paths: list[Path] = []
     for e in entries:
-        b = next(b for b in rotor.bearings if b.name == e.name)
-        rp = most_loaded_roller_pressure(b.geometry, b.equilibrium(b.full_load(st.load_of(b.name)), st.speed_rad_s))
+        b = next(b for b in st.bearings if b.name == e.name)
+        rp = roller_pressure_under(b, st.load_of(b.name), st.speed_rad_s)
         stem = "contact" if len(entries) == 1 else f"contact_{e.name}"
         paths.append(write_contact(outdir / f"{stem}.h5", run_info, rp.contact, {
             "source": f"most loaded roller of DTRB {e.name!r} at the rotor's static equilibrium",

@@ -11,6 +11,7 @@ from importlib import resources
 from pathlib import Path
 
 import h5py
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -189,3 +190,30 @@ def _separate_streams() -> CliRunner:
         return CliRunner(mix_stderr=False)
     except TypeError:
         return CliRunner()
+
+
+@pytest.mark.slow
+def test_ctrl_c_in_a_campbell_diagram_keeps_the_speeds_done(tmp_path):
+    """Issue 23: Ctrl-C in `campbell` said "interrupted" and wrote nothing. Now the speeds whose static
+    states were found are written, marked incomplete with the reason, and the exit code is 130."""
+    out = tmp_path / "out"
+    proc = subprocess.Popen([str(SPINDLESIM), "campbell", "--speeds", "1000:12000:40", "-o", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=_env(),
+                            preexec_fn=as_in_a_terminal)
+    err = _Lines(proc.stderr)
+    try:
+        assert err.wait_for("campbell: 8/40", 120), err.text()  # the fluid-film states are being found
+        proc.send_signal(signal.SIGINT)
+        proc.wait(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 130, err.text()
+    with h5py.File(out / "campbell.h5") as f:
+        assert not bool(f.attrs["complete"])
+        assert "interrupted by the user" in f.attrs["incomplete_reason"]
+        speeds = f["campbell/speed_rpm"][()]
+        assert 8 <= len(speeds) < 40 and speeds[0] == 1000.0
+        assert np.isfinite(f["campbell/frequency_hz"][()]).any()
+    assert (out / "campbell.png").exists()

@@ -64,17 +64,23 @@ def test_states_as_cheap_as_a_linear_rotor_s_are_not_prefetched(monkeypatch):
 
 
 def test_no_prefetch_thread_outlives_a_failing_diagram(monkeypatch):
+    """Ctrl-C during the static states: the diagram of the speeds solved before it comes back marked
+    interrupted (issue 23: the work done is kept), and no prefetch thread is left running."""
+    import spindlesim.analysis.points as points
+
     monkeypatch.setattr(campbell._Guess, "MIN_STATE_S", 0.0)
     rotor = build_rotor(default_deck("spindle_linear").deck)
     monkeypatch.setattr(campbell, "usable_cores", lambda: 2)
-    real = campbell.operating_state
+    real = points.operating_state
 
     def failing(rotor_, speed, shaft, **kw):
         if speed > 5000:
             raise KeyboardInterrupt  # Ctrl-C during the static states
         return real(rotor_, speed, shaft, **kw)
 
-    monkeypatch.setattr(campbell, "operating_state", failing)
-    with pytest.raises(KeyboardInterrupt):
-        campbell.solve_campbell(rotor, np.linspace(0, 12000, 9), n_modes=6)
+    monkeypatch.setattr(points, "operating_state", failing)
+    res = campbell.solve_campbell(rotor, np.linspace(0, 12000, 9), n_modes=6)
+    assert res.interrupted and "interrupted by the user at 6000 rpm" in res.incomplete_reason
+    np.testing.assert_allclose(res.speed_rpm, [0.0, 1500.0, 3000.0, 4500.0])
+    assert np.all(np.isfinite(res.frequency_hz))
     assert not [t for t in threading.enumerate() if t.name == "campbell-modal-prefetch"]

@@ -47,9 +47,11 @@ def _member(base: list[str], name: str) -> str:
     return ".".join(base + [name]) if is_module else ".".join(base)
 
 
-def _imports(path: Path) -> list[tuple[int, str]]:
-    rel = path.relative_to(ROOT.parent).with_suffix("")
-    module = ".".join(rel.parts)
+def _imports(path: Path, module: str | None = None) -> list[tuple[int, str]]:
+    """(line, imported spindlesim module) of every import in ``path``; ``module``: its dotted name (by
+    default from its place under the package)."""
+    if module is None:
+        module = ".".join(path.relative_to(ROOT.parent).with_suffix("").parts)
     package_parts = module.split(".") if path.name == "__init__.py" else module.split(".")[:-1]
     if path.name == "__init__.py":
         package_parts = package_parts[:-1]
@@ -81,34 +83,62 @@ def test_every_package_has_a_rank():
     assert owners <= set(RANK), f"packages without a layer: {sorted(owners - set(RANK))}"
 
 
-def test_imports_go_down_the_layers():
+def _against_layers(path: Path, own: str, module: str | None = None) -> list[str]:
     bad = []
-    for path, own in _modules():
-        for line, target in _imports(path):
-            dest = _package(target)
-            if dest == own:
-                continue
-            if dest not in RANK or RANK[dest] >= RANK[own]:
-                bad.append(f"{path.relative_to(ROOT.parent)}:{line}: {own} imports {target}")
+    for line, target in _imports(path, module):
+        dest = _package(target)
+        if dest == own:
+            continue
+        if dest not in RANK or RANK[dest] >= RANK[own]:
+            bad.append(f"{path.name}:{line}: {own} imports {target}")
+    return bad
+
+
+def test_imports_go_down_the_layers():
+    bad = [b for path, own in _modules() for b in _against_layers(path, own)]
     assert not bad, "imports against the layers:\n" + "\n".join(bad)
 
 
-def test_the_check_sees_a_violation(tmp_path):
-    """The parser finds relative and absolute imports (so the test above can fail)."""
-    pkg = ROOT / "analysis"
-    probe = pkg / "campbell.py"
-    found = {t for _, t in _imports(probe)}
-    assert any(_package(t) == "fe" for t in found) and any(_package(t) == "model" for t in found)
+def test_the_check_sees_a_planted_violation(tmp_path):
+    """A module of the bearing families that imports an analysis (relatively and absolutely) and one of
+    the analyses that imports the runs: the check names every line (so the test above can fail)."""
+    planted = tmp_path / "probe.py"
+    planted.write_text("from ...analysis import points\nimport spindlesim.runs.rotor\nfrom ...fields import Load5\n")
+    bad = _against_layers(planted, "bearings", "spindlesim.bearings.ball.probe")
+    assert bad == ["probe.py:1: bearings imports spindlesim.analysis",
+                   "probe.py:2: bearings imports spindlesim.runs.rotor"]
+    upward = tmp_path / "upward.py"
+    upward.write_text("from ..runs import common\nfrom .points import OperatingPoints\n")
+    assert _against_layers(upward, "analysis", "spindlesim.analysis.upward") == [
+        "upward.py:1: analysis imports spindlesim.runs"]
 
 
 #: what the analyses must not do: ask a bearing what it is (the contract is all they may use)
 PROBES = re.compile(r"hasattr\(\s*b\w*\s*,|getattr\(\s*b\w*\s*,\s*\"(?!name)|\.type\s+(==|in)\s|isinstance\(\s*b\w*\s*,")
 
 
-def test_analyses_never_ask_a_bearing_what_it_is():
+#: the layers above the bearings and the deck: they use the bearing contract and ask the deck layer
+#: (deck/describe.py) which entries are of which type
+ABOVE = ("analysis", "fe", "runs", "output", "sweep", "commands")
+
+
+def _probes(paths) -> list[str]:
     bad = []
-    for path in sorted((ROOT / "analysis").rglob("*.py")):
+    for path in paths:
         for i, text in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
             if PROBES.search(text) and "noqa: contract" not in text:
-                bad.append(f"{path.relative_to(ROOT.parent)}:{i}: {text.strip()}")
-    assert not bad, "analyses probing bearing types or attributes:\n" + "\n".join(bad)
+                bad.append(f"{path.name}:{i}: {text.strip()}")
+    return bad
+
+
+def test_no_layer_above_the_bearings_asks_a_bearing_what_it_is():
+    bad = _probes(p for layer in ABOVE for p in sorted((ROOT / layer).rglob("*.py")))
+    assert not bad, "type or attribute probes above the bearings:\n" + "\n".join(bad)
+
+
+def test_the_probe_check_sees_a_planted_probe(tmp_path):
+    planted = tmp_path / "planted.py"
+    planted.write_text("ok = 1\nfluid = [b for b in deck.bearings if b.type == 'plain']\n"
+                       "has_oil = hasattr(bearing, 'oil')\n")
+    assert _probes([planted]) == ["planted.py:2: fluid = [b for b in deck.bearings if b.type == 'plain']",
+                                  "planted.py:3: has_oil = hasattr(bearing, 'oil')"]

@@ -69,3 +69,10 @@ def most_loaded_roller_pressure(geometry, state, nx: int = 64, ny: int = 256) ->
         raceway_E_Pa=g.youngs_modulus_Pa, raceway_nu=g.poisson, nx=nx, ny=ny)
     return RollerPressure(contact=res, row=int(row), roller=int(k), roller_load_N=Q_i, tilt_rad=float(theta),
                           slice_z_m=z, slice_load_N_m=q)
+
+
+def roller_pressure_under(bearing, static_load, speed_rad_s: float, nx: int = 64, ny: int = 256) -> RollerPressure:
+    """:func:`most_loaded_roller_pressure` of a DTRB (``DtrbBearing``) under the static load the shaft puts
+    on it (on its ``dof_names``) at ``speed_rad_s``."""
+    state = bearing.equilibrium(bearing.full_load(static_load), speed_rad_s)
+    return most_loaded_roller_pressure(bearing.geometry, state, nx, ny)

@@ -1,0 +1,146 @@
+"""The spindle at its operating points, solved once: the one object every rotor analysis reads.
+
+An operating point is a speed (and, with the thermal model, a temperature state).  :class:`OperatingPoints`
+is built from a rotor and
+
+* assembles the shaft once (``fe.assembly``);
+* solves the static state at each operating point once (``operating.operating_state``: every bearing's
+  nonlinear reaction, its operating point frozen), keeps it, and along a list of speeds starts each from
+  its neighbour's (:meth:`along`) with one failure policy: what was solved is kept, the failing point is
+  named (a bearing that cannot carry its load at rest is left out at 0 rpm only, with a warning); a
+  Ctrl-C keeps what was solved too, marked as interrupted;
+* gives the linear system at a state (:meth:`system`, seed 003 eq. 21) and, for many speeds, one reduced
+  basis checked against the full model with a criterion given by the analysis (:meth:`basis`: the
+  Campbell diagram's roots, the tool point's dominant modes), built once per criterion.
+
+Analyses take an ``OperatingPoints`` (or a rotor, from which they make one): a run builds it once and
+every analysis of that run, the FRF and the tool-point model of one ``frf`` command, a Campbell
+diagram and its frozen comparison, the lobes at every speed and at the deck speed, reads the same
+states.  The counters ``assemblies`` and ``solves`` tell how much was computed (the tests hold them).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from ..fe.assembly import ShaftMatrices, assemble_shaft
+from ..model.rotor import Rotor
+from .operating import RPM, OperatingState, SystemMatrices, operating_state, system_matrices
+
+log = logging.getLogger(__name__)
+
+#: what a failing static state raises (a bearing that cannot carry its load, no equilibrium found)
+SOLVE_ERRORS = (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError)
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """Static states along a list of speeds: those solved, in order, and why the list stopped short."""
+
+    speeds_rpm: np.ndarray  # the speeds whose states were found
+    states: tuple[OperatingState, ...]
+    stopped: str = ""  # "" (every speed solved) or "stopped at ... rpm: ..." / "interrupted at ..."
+    first: int = 0  # index, in the speeds asked for, of the first one solved (0 rpm may be left out)
+    interrupted: bool = False  # stopped by Ctrl-C
+
+    def __len__(self) -> int:
+        return len(self.states)
+
+
+class OperatingPoints:
+    """The rotor at its operating points (module note).  Mutable only in its caches."""
+
+    def __init__(self, rotor: Rotor):
+        self.rotor = rotor
+        self.shaft: ShaftMatrices = assemble_shaft(rotor)
+        self.assemblies = 1
+        self.solves = 0
+        self._states: dict[float, OperatingState] = {}
+        self._bases: dict[tuple, object] = {}
+
+    @classmethod
+    def of(cls, source: "Rotor | OperatingPoints") -> "OperatingPoints":
+        """``source`` itself, or the operating points of a rotor."""
+        return source if isinstance(source, OperatingPoints) else cls(source)
+
+    # ---- static states ------------------------------------------------------------------------
+    def state(self, speed_rpm: float | None = None, start: OperatingState | None = None) -> OperatingState:
+        """The static state at ``speed_rpm`` (default: the rotor's speed), solved on first use and kept;
+        ``start``: a neighbouring speed's state to start from."""
+        rpm = float(self.rotor.speed_rpm if speed_rpm is None else speed_rpm)
+        st = self._states.get(rpm)
+        if st is None:
+            st = operating_state(self.rotor, rpm, self.shaft, start=start)
+            self.solves += 1
+            self._states[rpm] = st
+        return st
+
+    def along(self, speeds_rpm, tick: Callable[[], None] | None = None,
+              on_state: Callable[[OperatingState, float], None] | None = None, what: str = "") -> Sweep:
+        """Static states at every speed, each started from its neighbour's (module note's failure policy);
+        ``tick()`` after each speed, ``on_state(state, rpm)`` told of each state found; ``what`` names the
+        analysis in the messages.  The first speed's failure is raised (nothing to show)."""
+        speeds = np.asarray(speeds_rpm, float)
+        label = f"{what}: " if what else ""
+        states: list[OperatingState] = []
+        st, first = None, 0
+        for s in speeds:
+            try:
+                st = self.state(s, start=st)
+            except KeyboardInterrupt:
+                if not states:
+                    raise
+                return self._partial(speeds, states, first, f"interrupted by the user at {s:g} rpm", True, label)
+            except SOLVE_ERRORS as exc:
+                if not states and s <= 0 and len(speeds) > 1:  # e.g. a fluid film carries nothing at rest
+                    log.warning("%s%g rpm left out (%s)", label, s, exc)
+                    first += 1
+                    if tick is not None:
+                        tick()
+                    continue
+                if not states:
+                    raise
+                return self._partial(speeds, states, first, f"stopped at {s:g} rpm", False, label, exc)
+            states.append(st)
+            if on_state is not None:
+                on_state(st, float(s))
+            if tick is not None:
+                tick()
+        return Sweep(speeds[first:first + len(states)], tuple(states), "", first)
+
+    def _partial(self, speeds, states, first, where, interrupted, label, exc=None) -> Sweep:
+        done = (states[0].speed_rad_s / RPM, states[-1].speed_rad_s / RPM)
+        reason = f"{where} (speeds from {done[0]:g} to {done[1]:g} rpm done)" + (f": {exc}" if exc else "")
+        log.warning("%s%s", label, reason)
+        return Sweep(speeds[first:first + len(states)], tuple(states), reason, first, interrupted)
+
+    def held(self, frozen_rpm: float, speeds_rpm) -> tuple[OperatingState, ...]:
+        """The bearings' state at ``frozen_rpm`` with the shaft (gyroscopics, rotating damping) at every
+        speed: a Campbell diagram without the speed effects of the bearings."""
+        held = self.state(frozen_rpm)
+        return tuple(dataclasses.replace(held, speed_rad_s=float(s) * RPM) for s in np.asarray(speeds_rpm, float))
+
+    # ---- linear systems -------------------------------------------------------------------------
+    def system(self, state: OperatingState) -> SystemMatrices:
+        """M, C, K of the full model with every bearing linearised at ``state``."""
+        return system_matrices(self.rotor, state=state)
+
+    def basis(self, key: tuple, build: Callable[[], object]):
+        """The reduced basis an analysis checked with its own criterion, built once per ``key`` (the
+        criterion first, then what it was checked at): ``build()`` makes it (None: the full model is used)."""
+        if key not in self._bases:
+            self._bases[key] = build()
+        return self._bases[key]
+
+    def last_basis(self, kind: str):
+        """The basis most recently built for a key starting with ``kind`` (None if none was, or it was the
+        full model): a candidate another diagram of the same rotor tries first."""
+        for key in reversed(list(self._bases)):
+            if key[0] == kind and self._bases[key] is not None:
+                return self._bases[key]
+        return None

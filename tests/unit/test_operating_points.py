@@ -1,0 +1,80 @@
+"""The spindle at its operating points, solved once (issue 24): every analysis of a run reads one
+:class:`~spindlesim.analysis.points.OperatingPoints`, so the shaft is assembled once and each static state
+(speed, bearing set) is solved once.  The work is counted at its source: the shaft assembly of
+``fe.assembly`` and the static solver of ``analysis.operating``, whoever calls them."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import spindlesim.analysis.operating as operating
+import spindlesim.analysis.points as points_module
+from spindlesim.analysis.points import OperatingPoints
+from spindlesim.deck import default_deck, load_deck
+from spindlesim.model.build import build_rotor
+from spindlesim.runs import run_analysis
+
+DECKS = Path(__file__).parents[2] / "decks"
+
+
+@pytest.fixture
+def counted(monkeypatch):
+    """Counts of shaft assemblies and static-state solves, wherever they are asked for."""
+    counts = {"assemblies": 0, "solves": [], "speeds": []}
+    real_assemble, real_state = operating.assemble_shaft, points_module.operating_state
+
+    def assemble(rotor):
+        counts["assemblies"] += 1
+        return real_assemble(rotor)
+
+    def state(rotor, speed_rpm=None, *args, **kwargs):
+        counts["speeds"].append(float(speed_rpm if speed_rpm is not None else rotor.speed_rpm))
+        return real_state(rotor, speed_rpm, *args, **kwargs)
+
+    def state_elsewhere(*args, **kwargs):  # a static state solved outside the operating points
+        counts["solves"].append("outside")
+        return real_state(*args, **kwargs)
+
+    for module in (operating, points_module):
+        monkeypatch.setattr(module, "assemble_shaft", assemble)
+    monkeypatch.setattr(points_module, "operating_state", state)
+    monkeypatch.setattr(operating, "operating_state", state_elsewhere)
+    return counts
+
+
+def test_campbell_with_the_frozen_comparison_assembles_once_and_solves_each_speed_once(counted, tmp_path):
+    """Milling spindle: 50 speeds 0-24,000 rpm and the comparison with the bearings frozen at 0 rpm (a speed
+    of the diagram): one assembly, 50 static states, nothing solved twice."""
+    loaded = load_deck(DECKS / "milling_spindle.yaml")
+    run_analysis("campbell", loaded, tmp_path, {})
+    assert counted["assemblies"] == 1
+    assert len(counted["speeds"]) == 50 and len(set(counted["speeds"])) == 50
+    assert not counted["solves"]
+
+
+def test_frf_with_its_tool_point_solves_its_state_once(counted, tmp_path):
+    loaded = load_deck(DECKS / "milling_spindle.yaml")
+    run_analysis("frf", loaded, tmp_path, {"plots": False})
+    assert counted["assemblies"] == 1
+    assert counted["speeds"] == [18000.0]
+    assert not counted["solves"]
+
+
+def test_the_analyses_of_one_run_share_the_assembly_and_the_deck_speed_state(counted, tmp_path):
+    loaded = load_deck(DECKS / "milling_spindle.yaml")
+    for name in ("static", "modal", "frf"):
+        run_analysis(name, loaded, tmp_path, {"plots": False})
+    assert counted["assemblies"] == 1
+    assert counted["speeds"] == [18000.0]
+
+
+def test_a_state_is_kept_and_a_sweep_starts_each_speed_from_its_neighbour():
+    pts = OperatingPoints(build_rotor(default_deck("spindle_linear").deck))
+    a = pts.state(3000.0)
+    assert pts.state(3000.0) is a and pts.solves == 1
+    sweep = pts.along(np.array([0.0, 1500.0, 3000.0]))
+    assert pts.solves == 3 and sweep.states[2] is a  # 3000 rpm was known
+    assert not sweep.stopped and sweep.first == 0
