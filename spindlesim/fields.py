@@ -75,6 +75,11 @@ UNIT_RANGES: dict[str, tuple[float, float]] = {
     "_deg": (-1e4, 1e4),
     "_g_mm": (0.0, 1e8),
     "_percent": (0.0, 100.0),
+    "_W_mK": (0.0, 1e4),            # thermal conductivity
+    "_W": (0.0, 1e9),
+    "_kW": (0.0, 1e6),
+    "_l_min": (0.0, 1e5),           # coolant flow
+    "_min": (0.0, 1e6),             # minutes (warm-up profiles)
 }
 _SUFFIXES = sorted(UNIT_RANGES, key=len, reverse=True)
 
@@ -82,7 +87,8 @@ _SUFFIXES = sorted(UNIT_RANGES, key=len, reverse=True)
 def unit_text(suffix: str) -> str:
     """``N/m`` for ``_N_m``: the unit of a key suffix as a reader writes it."""
     special = {"_N_per_m_n": "N/m^n", "_g_mm": "g mm", "_kg_m2": "kg m2", "_hz": "Hz", "_Pa_s": "Pa s",
-               "_J_kgK": "J/(kg K)", "_W_m2K": "W/(m2 K)", "_percent": "%"}
+               "_J_kgK": "J/(kg K)", "_W_m2K": "W/(m2 K)", "_percent": "%", "_W_mK": "W/(m K)",
+               "_l_min": "L/min"}
     return special.get(suffix, suffix[1:].replace("_", "/"))
 
 

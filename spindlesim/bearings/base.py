@@ -64,6 +64,17 @@ frequencies_hz(speed) -> dict[str, float]
 compiled() -> CompiledForce
     Parameters of the bearing's compiled force (``bearings.compiled``), for the transient
     engine's explicit integrator.  Raises NotImplementedError for bearings without one.
+at_temperatures(temperatures) -> bearing
+    The bearing with its parts at ``temperatures`` (a
+    :class:`~spindlesim.thermal.growth_bearings.BearingTemperatures`: inner ring, rolling elements,
+    outer ring, the shaft and housing seats and the reference of the cold assembly): grown rings and
+    rolling elements, fits, the operating clearance or preload that follows.  The thermal model of the
+    spindle calls it at every step; a bearing without a growth model returns itself.
+heat(speed, static_load, lubrication, lubricant_C) -> HeatReport or None
+    The heat the bearing generates at the operating point (``static_load`` as in ``linearized``), split
+    where it goes (inner ring, rolling elements, outer ring) with the contact loads the thermal network's
+    conductances need; ``lubrication`` a :class:`Lubrication`, ``lubricant_C`` the oil's temperature.
+    None: the family has no heat model in the spindle's network (a fluid film keeps its own heat balance).
 outputs(q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]
     What a transient records for this bearing at a sampled state, name -> (value, units): always
     "force" (the reaction on the node DOFs, as in ``force_and_tangent``), and what the family
@@ -119,6 +130,38 @@ class Bearing(Protocol):
 
 
 @dataclass(frozen=True)
+class Lubrication:
+    """How a rolling bearing is lubricated, for its heat: the oil (``thermal.friction.Lubricant``), the method
+    (grease, oil_mist, oil_air, oil_bath, oil_jet) and the oil's volume share in the cavity."""
+
+    lubricant: object
+    method: str = "oil_air"
+    oil_volume_fraction: float = 0.01
+
+
+@dataclass(frozen=True)
+class HeatReport:
+    """Heat of a bearing at its operating point [W], split where it goes, and its contacts for the network:
+    the loads per rolling element [N] at the inner and outer race (arrays) and the lubricant films [m]."""
+
+    inner_W: float
+    elements_W: float
+    outer_W: float
+    inner_contact_N: np.ndarray
+    outer_contact_N: np.ndarray
+    film_inner_m: float = 0.0
+    film_outer_m: float = 0.0
+    row_thrust_N: np.ndarray | None = None  # axial load each row carries (its preload at rest), where it has rows
+    contact_angle_inner_deg: np.ndarray | None = None  # per row, mean over the rolling elements
+    contact_angle_outer_deg: np.ndarray | None = None
+    detail: object = None  # the family's own breakdown (spin, rolling, drag ...)
+
+    @property
+    def total_W(self) -> float:
+        return self.inner_W + self.elements_W + self.outer_W
+
+
+@dataclass(frozen=True)
 class CompiledForce:
     """A bearing's compiled force: ``kind`` selects the kernel in ``bearings.compiled``; the
     kernel reads its parameters from ``floats`` and ``ints``."""
@@ -149,6 +192,13 @@ class BearingBase:
 
     def frequencies_hz(self, speed: float) -> dict[str, float]:
         return {}
+
+    def at_temperatures(self, temperatures):
+        return self
+
+    def heat(self, speed: float, static_load: np.ndarray | None, lubrication: Lubrication,
+             lubricant_C: float) -> HeatReport | None:
+        return None
 
     def compiled(self) -> CompiledForce:
         raise NotImplementedError(
@@ -194,3 +244,48 @@ def tangent_by_differences(force: Callable[[np.ndarray, np.ndarray], np.ndarray]
             e[k] = hv[k]
             C[:, k] = -(force(q, v + e) - force(q, v - e)) / (2.0 * hv[k])
     return K, C
+
+
+class AxiallyShifted(BearingBase):
+    """A bearing whose housing seat has moved along z by ``offset_m`` relative to its shaft seat (the
+    shaft and the housing growing by different amounts between the bearing sets): the bearing sees the
+    rotor's displacement plus that offset.  Everything else is the bearing's own."""
+
+    def __init__(self, bearing, offset_m: float):
+        if "z" not in bearing.dof_names:
+            raise ValueError(f"bearing {bearing.name!r} has no axial DOF to shift")
+        self.inner = bearing
+        self.offset_m = float(offset_m)
+        self._shift = np.zeros(len(bearing.dof_names) + bearing.internal_mass.size)
+        self._shift[bearing.dof_names.index("z")] = self.offset_m
+
+    def __getattr__(self, name):  # name, node, dof_names, internal_mass and the family's own attributes
+        return getattr(self.inner, name)
+
+    def force_and_tangent(self, q, v, t, speed, angle=None):
+        return self.inner.force_and_tangent(np.asarray(q, float) + self._shift, v, t, speed, angle)
+
+    def force(self, q, v, t, speed, angle=None):
+        return self.inner.force(np.asarray(q, float) + self._shift, v, t, speed, angle)
+
+    def linearized(self, speed, static_load=None):
+        return self.inner.linearized(speed, static_load)
+
+    def static_displacement(self, speed, static_load=None):
+        return self.inner.static_displacement(speed, static_load) - self._shift
+
+    def at_operating_point(self, speed, static_load=None, transient=False):
+        inner = self.inner.at_operating_point(speed, static_load, transient)
+        return self if inner is self.inner else AxiallyShifted(inner, self.offset_m)
+
+    def at_temperatures(self, temperatures):
+        return AxiallyShifted(self.inner.at_temperatures(temperatures), self.offset_m)
+
+    def heat(self, speed, static_load, lubrication, lubricant_C):
+        return self.inner.heat(speed, static_load, lubrication, lubricant_C)
+
+    def frequencies_hz(self, speed):
+        return self.inner.frequencies_hz(speed)
+
+    def outputs(self, q, v, t, speed, angle=None):
+        return self.inner.outputs(np.asarray(q, float) + self._shift, v, t, speed, angle)

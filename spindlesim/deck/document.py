@@ -21,6 +21,7 @@ from ..bearings.roller.section import TransientSection
 from ..chatter.section import ChatterSection
 from ..bearings.types import BEARING_TYPES
 from ..contact.section import ContactSection
+from ..thermal.section import SpindleThermalSection
 from ..fields import ANY_NUMBER, AnyNumber, DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
 
 FrequencyRange = Range  # {start, stop, count}
@@ -34,6 +35,7 @@ SECTIONS: dict[str, type[BaseModel]] = {
     "contact": ContactSection,
     "dtrb": DtrbSection,
     "transient": TransientSection,
+    "spindle_thermal": SpindleThermalSection,  # heat paths of a motor spindle on ball bearings (issue 22)
 }
 
 

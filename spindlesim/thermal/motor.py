@@ -4,17 +4,20 @@ Electrical losses at the rated point: P_loss = P (1 - eta) / eta (P the rated sh
 rated efficiency).  They are split into a load-dependent part (copper, ~ torque^2) and a speed-
 dependent part (iron, ~ f^beta with beta = 1.5-2: hysteresis ~ f, eddy currents ~ f^2):
 
-    P_el(n, M) = P_loss [c (M / M_r)^2 + (1 - c) (n / n_r)^beta]
+    P_el(n, M) = P_loss [c (M / M_r)^2 + (1 - c) (min(n, n_r) / n_r)^beta]
 
 with c = ``copper_fraction`` (share of copper losses at the rated point; default 0.6, our
 assumption: take it from the motor maker when known), M_r = P / (2 pi n_r / 60) the rated torque,
 n_r the rated (base) speed.  Above the base speed an induction spindle motor runs at constant
-power, so the torque for a given power is P / omega.
+power, so the torque for a given power is P / omega; its flux is weakened as 1/n there, so the
+iron losses stop growing (eddy currents ~ f^2 B^2 stay constant, hysteresis ~ f B^2 falls): they are
+held at their base-speed value (our simplification).
 
-Stator/rotor split: ``stator_fraction`` of P_el heats the stator (default 2/3) and the rest the
-rotor (1/3): the split Bossmanns and Tu (Int. J. Mach. Tools Manuf. 39 (1999) 1345-1366) used for
-an induction spindle motor.  Rotor windage (air friction in the gap) is added on top: half to the
-rotor, half to the stator (it heats the gap air, which exchanges with both surfaces; our choice).
+Stator/rotor split: the iron losses heat the stator (the rotor iron sees only the slip frequency);
+``stator_fraction`` of the copper losses heats the stator (default 2/3) and the rest the rotor (1/3):
+the split Bossmanns and Tu (Int. J. Mach. Tools Manuf. 39 (1999) 1345-1366) used for an induction
+spindle motor's losses under load.  Rotor windage (air friction in the gap) is added on top: half to
+the rotor, half to the stator (it heats the gap air, which exchanges with both surfaces; our choice).
 
 Windage: torque coefficient of a cylinder rotating inside a fixed one, Bilgen and Boulos,
 J. Fluids Eng. 95 (1973) 122-126, Re = Omega R delta / nu, C_M = 2 M / (pi rho Omega^2 R^4 L):
@@ -86,11 +89,20 @@ class MotorRating:
         return self.rated_power_W / self.rated_speed_rad_s
 
 
+def copper_loss_W(motor: MotorRating, torque_Nm: float) -> float:
+    """P_loss c (M/M_r)^2 (module docstring)."""
+    return motor.rated_loss_W * motor.copper_fraction * (torque_Nm / motor.rated_torque_Nm) ** 2
+
+
+def iron_loss_W(motor: MotorRating, speed_rad_s: float) -> float:
+    """P_loss (1 - c) (n/n_r)^beta up to the base speed, constant above it (module docstring)."""
+    ratio = min(abs(speed_rad_s) / motor.rated_speed_rad_s, 1.0)
+    return motor.rated_loss_W * (1.0 - motor.copper_fraction) * ratio ** motor.iron_exponent
+
+
 def electrical_loss_W(motor: MotorRating, speed_rad_s: float, torque_Nm: float) -> float:
-    """P_loss [c (M/M_r)^2 + (1 - c) (n/n_r)^beta] (module docstring)."""
-    c = motor.copper_fraction
-    return motor.rated_loss_W * (c * (torque_Nm / motor.rated_torque_Nm) ** 2
-                                 + (1.0 - c) * (abs(speed_rad_s) / motor.rated_speed_rad_s) ** motor.iron_exponent)
+    """Copper plus iron losses (module docstring)."""
+    return copper_loss_W(motor, torque_Nm) + iron_loss_W(motor, speed_rad_s)
 
 
 def windage_torque_coefficient(reynolds: float, gap_to_radius: float) -> float:
@@ -133,6 +145,6 @@ def motor_losses(motor: MotorRating, speed_rad_s: float, *, power_W: float | Non
             available = motor.rated_power_W * min(1.0, w / motor.rated_speed_rad_s)
             power_W = load_fraction * available
         torque_Nm = power_W / w if w > 0 else (motor.rated_torque_Nm * load_fraction if load_fraction else 0.0)
-    el = electrical_loss_W(motor, w, torque_Nm)
+    cu, fe = copper_loss_W(motor, torque_Nm), iron_loss_W(motor, w)
     s = motor.stator_fraction
-    return MotorLosses(s * el + 0.5 * windage_W, (1.0 - s) * el + 0.5 * windage_W, el, windage_W)
+    return MotorLosses(fe + s * cu + 0.5 * windage_W, (1.0 - s) * cu + 0.5 * windage_W, cu + fe, windage_W)

@@ -113,8 +113,9 @@ class SpindleNetwork:
         for b in self.layout.bearings:
             c = (contacts or {}).get(b.name)
             g = self._bearing(b, speed_rad_s, c, T)
-            out[f"bearing:{b.name}:inner--balls"] = g.inner_balls_W_K
-            out[f"bearing:{b.name}:balls--outer"] = g.balls_outer_W_K
+            faces_i, faces_o = self._ring_faces(b, speed_rad_s)
+            out[f"bearing:{b.name}:inner--balls"] = g.inner_balls_W_K + faces_i
+            out[f"bearing:{b.name}:balls--outer"] = g.balls_outer_W_K + faces_o
             out[f"bearing:{b.name}:balls--housing"] = g.balls_cavity_W_K
         return out
 
@@ -129,6 +130,22 @@ class SpindleNetwork:
             contact_angle_rad=b.contact_angle_rad, inner_axes_m=(a1i * qi, b1i * qi), outer_axes_m=(a1o * qo, b1o * qo),
             k_ball_W_mK=b.ball.conductivity_W_mK, k_ring_W_mK=b.ring.conductivity_W_mK, medium=air(_clip_air(t_air)),
             film_inner_m=0.0 if c is None else c.film_inner_m, film_outer_m=0.0 if c is None else c.film_outer_m)
+
+    def _ring_faces(self, b, speed: float) -> tuple[float, float]:
+        """Convection [W/K] of the rings' free surfaces (side faces and shoulder lands, all rows) to the oil-air
+        of the bearing cavity (the balls' node), in parallel with the ball contacts: the inner ring's as a
+        rotating cylinder of its shoulder diameter in air (Kendoush, :func:`convection.rotating_shaft_h`), the
+        outer ring's in the air the cage drags round at about 0.4 of the shaft speed.  Our estimate of a path
+        the contact model leaves out; docs/theory.md."""
+        t = self._inner_air_C()
+        rows = max(1, round(b.width_m / (1.6 * b.ball_diameter_m)))
+        land = 0.3 * b.width_m  # shoulder land width exposed, all rows
+        a_i = rows * 2 * 0.25 * math.pi * (b.inner_shoulder_m ** 2 - b.bore_m ** 2) + math.pi * b.inner_shoulder_m * land
+        a_o = (rows * 2 * 0.25 * math.pi * (b.outer_diameter_m ** 2 - b.outer_shoulder_m ** 2)
+               + math.pi * b.outer_shoulder_m * land)
+        h_i = cv.rotating_shaft_h(b.inner_shoulder_m, speed, t + 10.0, t)
+        h_o = cv.rotating_shaft_h(b.outer_shoulder_m, 0.4 * speed, t + 10.0, t)
+        return h_i * a_i, h_o * a_o
 
     def _inner_air_C(self) -> float:
         lay = self.layout

@@ -188,7 +188,8 @@ def test_rest_is_the_limit_of_low_speed():
 
 
 def test_spring_preloaded_rows_keep_their_force_and_add_no_axial_stiffness():
-    b = bearing(preload={"kind": "spring", "axial_N": 400.0})
+    # the rows carrying -z thrust float: row 1 of the DB pair (at its +z end)
+    b = bearing(preload={"kind": "spring", "axial_N": 400.0, "floating": "-z"})
     for rpm in (0.0, 15000.0):
         st = b.state(np.array([1200.0, 0.0, 500.0, 0.0, 0.0]), rpm * RPM)
         assert st.row_axial_load_N[1] == pytest.approx(400.0, rel=1e-10)  # floating row (the last)

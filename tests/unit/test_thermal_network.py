@@ -129,7 +129,9 @@ def test_spindle_nodes_and_energy_balance(spindle):
 
 def test_spindle_heat_callable_and_contacts(spindle):
     """Bearing heat that depends on the temperatures (the coupling's signature) converges; heavier
-    contacts conduct better."""
+    contacts conduct better: the contact part of the ring-to-balls conductance goes as the ellipse's size,
+    Q^(1/3) (eight times the load, twice the conductance), beside the rings' free faces, which do not
+    depend on the load."""
     w = 12000 * math.pi / 30
 
     def heat(T):
@@ -140,7 +142,11 @@ def test_spindle_heat_callable_and_contacts(spindle):
     assert s.iterations > 1
     light = spindle.conductances(w, contacts={"front": BearingContacts(50.0, 50.0)})
     heavy = spindle.conductances(w, contacts={"front": BearingContacts(400.0, 400.0)})
-    assert heavy["bearing:front:inner--balls"] == pytest.approx(2 * light["bearing:front:inner--balls"], rel=1e-9)
+    front = next(b for b in spindle.layout.bearings if b.name == "front")
+    faces = spindle._ring_faces(front, w)[0]
+    assert faces > 0
+    assert heavy["bearing:front:inner--balls"] - faces == pytest.approx(
+        2 * (light["bearing:front:inner--balls"] - faces), rel=1e-9)
 
 
 def test_spindle_warm_up_reaches_the_steady_state(spindle):
@@ -152,4 +158,6 @@ def test_spindle_warm_up_reaches_the_steady_state(spindle):
     r2 = spindle.warm_up(prof, 5400.0, HEAT, t_eval=np.linspace(0, 5400, 91))
     front = r2["bearing:front:inner"]
     k1, k2 = np.searchsorted(r2.times_s, 1800.0), np.searchsorted(r2.times_s, 3600.0)
-    assert front[k2] > front[k1] > front[0] == 20.0
+    # warmer than cold at both steps (the bearings' heat is held here; at the higher speed the motor's iron
+    # losses are held above its base speed and the rotating surfaces cool better, so no order between them)
+    assert min(front[k1], front[k2]) > front[0] + 10.0 and front[0] == 20.0

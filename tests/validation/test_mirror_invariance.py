@@ -6,7 +6,7 @@ bearing's reaction (Fx, Fy) and the natural frequencies at the deck's speed must
 depends on which end the deck numbers from is a modelling error no self-comparison can see: a
 spring-preloaded ball pair used to float "the rows with the last row's thrust direction", which is the
 other physical row in the mirror image (milling spindle without its tool: nose stiffness 143.9 vs
-164.9 N/um at 18,000 rpm).  The floating side is now a deck key, ``outboard`` by default.
+164.9 N/um at 18,000 rpm).  Which rows float is now a deck key (by thrust direction, ``outward`` by default).
 
 Tolerances: 1e-6 relative (the nonlinear bearing equilibria converge to ~1e-10 of their loads; the
 fluid-film thermal balance to its own tolerance, hence 1e-5 there).
@@ -110,17 +110,18 @@ def test_mirror_image_gives_the_same_statics_reactions_and_frequencies(case):
     np.testing.assert_allclose(mb.damping_ratio, ma.damping_ratio, rtol=1e3 * rtol, atol=1e3 * rtol * 1e-3)
 
 
-def test_spring_preload_floats_the_outboard_rows_by_default_and_the_key_chooses():
-    """Milling spindle without its tool at 18,000 rpm: the rear pair (z = 390 of 440 mm) floats its
-    outboard (+z) row by default, as before the key existed (nose stiffness 143.9 N/um); floating the
-    inboard row is another machine (164.9 N/um, the number the mirror image used to give)."""
+def test_spring_preload_floats_the_outward_thrust_rows_by_default_and_the_key_chooses():
+    """Milling spindle without its tool at 18,000 rpm: the rear pair (z = 390 of 440 mm) floats the rows that
+    carry thrust outward (+z: the inboard row of its DB pair), which the shaft's thermal growth would
+    otherwise load; floating the other row is another machine (and the row the deck numbered from the other
+    end used to float before the key existed: nose stiffness 143.9 N/um)."""
     d = _milling_without_tool()
     k = {}
-    for side in ("outboard", "+z", "inboard", "-z"):
+    for side in ("outward", "+z", "inward", "-z"):
         e = copy.deepcopy(d)
         e["bearings"][1]["preload"]["floating"] = side
         k[side] = solve_static(_rotor(e)).static_stiffness_N_m
-    assert k["outboard"] == pytest.approx(k["+z"], rel=1e-12)
-    assert k["inboard"] == pytest.approx(k["-z"], rel=1e-12)
-    assert k["outboard"] / 1e6 == pytest.approx(143.9, abs=0.05)
-    assert k["inboard"] / 1e6 == pytest.approx(164.9, abs=0.05)
+    assert k["outward"] == pytest.approx(k["+z"], rel=1e-12)
+    assert k["inward"] == pytest.approx(k["-z"], rel=1e-12)
+    assert k["inward"] / 1e6 == pytest.approx(143.9, abs=0.05)
+    assert k["outward"] / 1e6 == pytest.approx(164.9, abs=0.05)

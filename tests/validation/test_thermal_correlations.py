@@ -150,14 +150,17 @@ def test_bearing_contact_ellipse_and_constriction():
 
 
 def test_motor_losses_and_windage():
-    """P (1 - eta)/eta at the rated point, split 2/3 stator 1/3 rotor, sums to the total; the
-    laminar windage coefficient is Couette's 4/Re within 2 % at delta/R = 0.05 and the Bilgen-Boulos
-    branches meet within 6 %."""
+    """P (1 - eta)/eta at the rated point: the iron part (40 %) in the stator, the copper part (60 %) split
+    2/3 stator 1/3 rotor, summing to the total; no rotor heat at idle; the iron losses held above the base
+    speed (field weakening); the laminar windage coefficient is Couette's 4/Re within 2 % at delta/R = 0.05
+    and the Bilgen-Boulos branches meet within 6 %."""
     m = MotorRating(18e3, 0.9, 9000 * math.pi / 30)
     assert m.rated_loss_W == pytest.approx(2000.0)
     rated = motor_losses(m, m.rated_speed_rad_s, load_fraction=1.0)
     assert rated.electrical_W == pytest.approx(2000.0, rel=1e-12)
-    assert rated.stator_W == pytest.approx(2000.0 * 2 / 3) and rated.rotor_W == pytest.approx(2000.0 / 3)
+    assert rated.stator_W == pytest.approx(800.0 + 1200.0 * 2 / 3) and rated.rotor_W == pytest.approx(1200.0 / 3)
+    idle = motor_losses(m, 2 * m.rated_speed_rad_s, load_fraction=0.0)
+    assert idle.rotor_W == 0.0 and idle.stator_W == pytest.approx(800.0)
     w = motor_losses(m, 2 * m.rated_speed_rad_s, load_fraction=0.5, windage_W=90.0)
     assert w.stator_W + w.rotor_W == pytest.approx(w.electrical_W + 90.0, rel=1e-12)
     assert windage_torque_coefficient(30.0, 0.05) * 30.0 == pytest.approx(4.0, rel=0.02)

@@ -26,9 +26,8 @@ Preload (one choice for the whole set):
 - ``spring`` (constant pressure): the outer rings of the floating rows slide axially in the
   housing and are pushed by a constant force ``axial_N``; their axial shift is solved for at
   every q and condensed out of the tangent (the floating rows add no axial stiffness).  The
-  housing still holds them radially and in tilt.  The floating rows are those with the thrust
-  direction of the end row on the ``floating_side`` of the set (+1: the row at the largest z,
-  -1: at the smallest); every row of a single bearing or tandem set.
+  housing still holds them radially and in tilt.  The floating rows are those whose thrust points
+  along ``floating_thrust`` (+1: +z, -1: -z); every row of a single bearing or tandem set.
 - ``none``: rings at first contact (q = 0), clearance as given.
 
 Ball positions: psi_j = phi + 2 pi j / Z in every row (rows aligned), phi = cage angle =
@@ -64,13 +63,13 @@ class BallEquilibriumError(ArithmeticError):
 
 @dataclass(frozen=True)
 class Preload:
-    """Preload of the set in SI: kind none | position (axial_m) | spring (axial_N, with the floating
-    rows on the ``floating_side`` (+1 / -1 along z) of the set)."""
+    """Preload of the set in SI: kind none | position (axial_m) | spring (axial_N, on the floating rows:
+    those carrying thrust along ``floating_thrust``, +1 / -1 along z)."""
 
     kind: str = "none"
     axial_m: float = 0.0
     axial_N: float = 0.0
-    floating_side: int = 1
+    floating_thrust: int = 1
     #: position preload only: per-row axial offsets [m] added to axial_m / 2 (thermal growth of the rings,
     #: spindlesim.thermal.growth_bearings); None = none
     row_offsets_m: tuple[float, ...] | None = None
@@ -118,6 +117,12 @@ class _SetEval:
     shift: float  # outer-ring axial shift of the floating rows [m] (along z)
 
 
+def _made_as(geometry, preload):
+    from .thermal import MadeAs
+
+    return MadeAs.of(geometry, preload)
+
+
 class BallBearing(BearingBase):
     """Quasi-static ball bearing (set); immutable apart from warm-start hints."""
 
@@ -126,7 +131,7 @@ class BallBearing(BearingBase):
 
     def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
                  model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4,
-                 speed_growth=None, growth=None):
+                 speed_growth=None, growth=None, made=None):
         if model not in MODELS:
             raise ValueError(f"model must be one of {MODELS}, not {model!r}")
         if preload.kind not in ("none", "position", "spring"):
@@ -136,8 +141,8 @@ class BallBearing(BearingBase):
             raise ValueError("a position preload needs opposed rows (arrangement DB or DF)")
         if preload.kind == "spring" and not preload.axial_N > 0.0:
             raise ValueError("a spring preload needs a positive axial force")
-        if preload.floating_side not in (1, -1):
-            raise ValueError("floating_side must be +1 or -1")
+        if preload.floating_thrust not in (1, -1):
+            raise ValueError("floating_thrust must be +1 or -1")
         if pitch_samples < 1:
             raise ValueError("pitch_samples must be >= 1")
         self.geometry = geometry
@@ -151,6 +156,8 @@ class BallBearing(BearingBase):
         #: against speed); ``growth``: what the bearing's temperatures and fits changed (reporting only)
         self.speed_growth = speed_growth
         self.growth = growth
+        #: how the bearing was made (the cold assembly: .thermal.MadeAs), the start of at_temperatures
+        self.made = made if made is not None else _made_as(geometry, preload)
         self._grown_p: tuple[float, np.ndarray] | None = None
         g = geometry
         D, dm = g.ball_diameter_m, g.pitch_diameter_m
@@ -174,9 +181,9 @@ class BallBearing(BearingBase):
         self._row_sign = np.ascontiguousarray(s, dtype=np.int64)
         self._row_zc = g.row_z_m + s * g.inner_centre_offset_m
         self._row_offset = preload.row_offsets(g.rows)
-        end = int(np.argmax(g.row_z_m) if preload.floating_side > 0 else np.argmin(g.row_z_m))
-        self._s_float = int(s[end])
-        self._floating = (s == s[end]) if preload.kind == "spring" else np.zeros(g.rows, bool)
+        # a single row or a tandem set floats whole, whatever the thrust named
+        self._s_float = int(preload.floating_thrust) if np.any(s == preload.floating_thrust) else int(s[0])
+        self._floating = (s == self._s_float) if preload.kind == "spring" else np.zeros(g.rows, bool)
         self.fully_floating = bool(self._floating.all())
         self._X = np.full((g.rows, g.balls, 2), np.nan)  # warm start of the ball centres
         self._shift_hint: float | None = None
@@ -200,9 +207,24 @@ class BallBearing(BearingBase):
 
     def _copy(self, **kw) -> "BallBearing":
         args = dict(preload=self.preload, name=self.name, node=self.node, model=self.model, rating=self.rating,
-                    pitch_samples=self.pitch_samples, speed_growth=self.speed_growth, growth=self.growth)
+                    pitch_samples=self.pitch_samples, speed_growth=self.speed_growth, growth=self.growth,
+                    made=self.made)
         args.update(kw)
-        return BallBearing(self.geometry, **args)
+        geometry = args.pop("geometry", self.geometry)
+        return BallBearing(geometry, **args)
+
+    # ---- the spindle's thermal model (contract: at_temperatures, heat) -------------------------------
+    def at_temperatures(self, temperatures) -> "BallBearing":
+        """The bearing rebuilt at the parts' temperatures from the way it was made (.thermal)."""
+        from . import thermal
+
+        return thermal.at_temperatures(self, temperatures)
+
+    def heat(self, speed, static_load, lubrication, lubricant_C):
+        """Heat of the set at its operating point, split to inner ring, balls and outer ring (.thermal)."""
+        from . import thermal
+
+        return thermal.heat(self, speed, static_load, lubrication, lubricant_C)
 
     # ---- kinematics -------------------------------------------------------------------------
     def cage_angle(self, shaft_angle_rad: float) -> float:

@@ -21,7 +21,7 @@ Rotor deck entry (``bearings:`` list), 5 DOF at its node::
       rows: 2                          # 1 for single, 2-4 for sets
       row_spacing_mm: 20.0             # axial distance between adjacent ball rows
       axial_direction: "+z"            # thrust the tandem rows carry (single, DT, 3-row sets)
-      preload: {kind: position, axial_um: 21.0}   # or {kind: spring, axial_N: 250.0, floating: outboard}
+      preload: {kind: position, axial_um: 21.0}   # or {kind: spring, axial_N: 250.0, floating: outward}
       model: outer_race_control        # or full
       dynamic_load_rating_N: null      # catalogue C of ONE bearing; null: ISO 281 from geometry
       reliability_percent: 90.0        # L_n = a_1 L_10
@@ -33,23 +33,11 @@ Rotor deck entry (``bearings:`` list), 5 DOF at its node::
 ``preload``: ``position`` - ``axial_um`` is the total axial approach clamping imposes on the set
 beyond first contact (catalogue preload offset), half of it taken by each opposed group; needs
 DB or DF.  ``spring`` - ``axial_N`` is the constant force on the floating outer rings: the rows
-with the thrust direction of the set's end row on the ``floating`` side (all rows of a single
-bearing or tandem set).  ``floating: outboard`` (default) is the side facing the nearer end of
-the shaft (where the springs of a rear set usually sit), ``inboard`` the other; ``+z`` / ``-z``
-name the side in the deck's frame.  A bearing at the middle of the shaft, and the standalone
-``bearing`` section, take outboard as +z.
-
-Standalone section (``spindlesim bearing``), the same keys plus::
-
-    bearing:
-      type: ball
-      ...
-      load: {fx_N: 0.0, fy_N: 0.0, fz_N: 0.0, mx_Nm: 0.0, my_Nm: 0.0}   # shaft on bearing
-      speed_rpm: 10000.0
-      sweeps:
-        preload: {start: 0.0, stop: 40.0, count: 21}   # axial_um or axial_N (the preload's kind)
-        load: {component: fx_N, start: 0.0, stop: 5000.0, count: 11}
-        speed_rpm: {start: 0.0, stop: 20000.0, count: 21}
+whose thrust points the ``floating`` way (all rows of a single bearing or tandem set).
+``floating: outward`` (default): the rows carrying thrust towards the nearer end of the shaft, which
+the shaft's thermal growth would load; ``inward`` the others; ``+z`` / ``-z`` name the thrust in the
+deck's frame.  A bearing at the middle of the shaft, and the standalone ``bearing`` section, take
+outward as +z.
 """
 
 from __future__ import annotations
@@ -215,13 +203,13 @@ class SpringPreload(DeckModel):
     axial_N: PositiveFloat
     """Constant axial force of the springs on the floating outer rings (they slide in the housing, so these rows
     add no axial stiffness)."""
-    # which rows float: those with the thrust direction of the set's end row on this side; outboard /
-    # inboard: the side facing the nearer / farther end of the shaft (resolved by ``placed``)
-    floating: Literal["outboard", "inboard", "+z", "-z"] = "outboard"
-    """Which rows float: those with the thrust direction of the set's end row on this side. outboard: the side
-    facing the nearer end of the shaft (where the springs of a rear set usually sit); inboard: the other side;
-    +z, -z: the side in the deck's frame. A bearing at the middle of the shaft and the standalone `bearing`
-    section take outboard as +z."""
+    floating: Literal["outward", "inward", "+z", "-z"] = "outward"
+    """Which rows float: those whose thrust (the axial load they carry from the shaft) points this way.
+    outward: towards the nearer end of the shaft, so that the shaft's thermal growth, which pushes the inner
+    rings outward, is taken by the springs and does not raise the preload (the usual rear set of a motor
+    spindle); inward: the other rows; +z, -z: the direction in the deck's frame. A single row or a tandem set
+    floats whole. A bearing at the middle of the shaft and the standalone `bearing` section take outward as
+    +z."""
 
 
 SIDES = {"+z": 1, "-z": -1}
@@ -429,18 +417,18 @@ def preload_from(entry: _BallKeys):
         return Preload()
     if isinstance(pre, PositionPreload):
         return Preload("position", axial_m=1e-6 * pre.axial_um)
-    return Preload("spring", axial_N=pre.axial_N, floating_side=SIDES.get(pre.floating, 1))
+    return Preload("spring", axial_N=pre.axial_N, floating_thrust=SIDES.get(pre.floating, 1))
 
 
 def placed(entry: BallBearingEntry, node_z_m: float, shaft_z_m: tuple[float, float]) -> BallBearingEntry:
-    """The entry with ``floating: outboard / inboard`` resolved to the side along z, from where the
+    """The entry with ``floating: outward / inward`` resolved to a thrust direction along z, from where the
     bearing sits on the shaft (its node's z within the shaft's [z_min, z_max])."""
     pre = entry.preload
     if not isinstance(pre, SpringPreload) or pre.floating in SIDES:
         return entry
-    outboard = "+z" if node_z_m >= 0.5 * (shaft_z_m[0] + shaft_z_m[1]) else "-z"
-    side = outboard if pre.floating == "outboard" else ("-z" if outboard == "+z" else "+z")
-    return entry.model_copy(update={"preload": pre.model_copy(update={"floating": side})})
+    outward = "+z" if node_z_m >= 0.5 * (shaft_z_m[0] + shaft_z_m[1]) else "-z"
+    thrust = outward if pre.floating == "outward" else ("-z" if outward == "+z" else "+z")
+    return entry.model_copy(update={"preload": pre.model_copy(update={"floating": thrust})})
 
 
 def preload_unit_to_si(entry: _BallKeys, value: float) -> float:
@@ -528,13 +516,17 @@ def build(entry: _BallKeys):
     from .bearing import BallBearing
     from .rating import RatingInputs
 
+    from .thermal import MadeAs
+
     geometry, preload = geometry_from(entry), preload_from(entry)
     growth = speed_growth = None
     thermal = thermal_inputs(entry)
+    made_as = _made_as(entry, geometry, preload)
     if thermal is not None:
         from .growth import SpeedGrowth, at_temperature
 
         temps, ring, ball, mounting = thermal
+        made_as = MadeAs(geometry, preload, ring, ball, mounting)
         made = geometry
         try:
             geometry, preload, growth = at_temperature(made, preload, temps, ring, ball, mounting)
@@ -550,4 +542,16 @@ def build(entry: _BallKeys):
         geometry, preload, name=entry.name, node=getattr(entry, "node", 1) - 1, model=entry.model,
         rating=RatingInputs(dynamic_load_rating_N=entry.dynamic_load_rating_N,
                             reliability_percent=entry.reliability_percent),
-        speed_growth=speed_growth, growth=growth)
+        speed_growth=speed_growth, growth=growth, made=made_as)
+
+
+def _made_as(entry: _BallKeys, geometry, preload):
+    """The cold assembly with the entry's materials (expansion coefficients) and no fits."""
+    from ...thermal.growth import ThermoElastic
+    from .thermal import MadeAs
+
+    def thermo(m):
+        return ThermoElastic(1e9 * m.E_GPa, m.poisson, m.density_kg_m3, m.expansion_1_K())
+
+    bm = entry.material if entry.ball_material is None else entry.ball_material
+    return MadeAs(geometry, preload, thermo(entry.material), thermo(bm))

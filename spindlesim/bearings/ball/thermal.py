@@ -1,0 +1,73 @@
+"""The ball bearing's part of the spindle's thermal model: the bearing at temperature and its heat.
+
+* :func:`at_temperatures`: the bearing rebuilt from the geometry and preload it was made with (the cold
+  assembly) at the parts' temperatures: :func:`.growth.at_temperature` (free growth of rings and balls,
+  fits, the operating clearance and preload offsets), the inner ring's centrifugal growth with a mounting.
+* :func:`heat`: the heat of the set at its operating point, from its quasi-static state (per-ball contact
+  loads, angles and Hertz ellipses): the local model of :func:`spindlesim.thermal.friction_ball.ball_bearing_heat`
+  (spin over the Hertz ellipse, EHL rolling and hysteresis, drag of the balls in the oil-air), split to the
+  inner ring, the balls (with the drag) and the outer ring.
+
+docs/theory.md, "Spindle thermal model: heat generation and growth".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...thermal.friction_ball import STARVATION_K_RS, ContactFrictionOptions, ball_bearing_heat
+from ...thermal.growth import BEARING_STEEL, SI3N4, ThermoElastic
+from ..base import HeatReport, Lubrication
+
+#: a ball material below this density is a ceramic (silicon nitride's expansion by default)
+CERAMIC_BELOW_KG_M3 = 5000.0
+
+
+@dataclass(frozen=True)
+class MadeAs:
+    """The bearing as assembled (cold): geometry and preload before any growth, the ring and ball materials'
+    thermo-elastic data and the mounting (fits; None: free rings)."""
+
+    geometry: object
+    preload: object
+    ring: ThermoElastic = BEARING_STEEL
+    ball: ThermoElastic | None = None
+    mounting: object = None
+
+    @classmethod
+    def of(cls, geometry, preload) -> "MadeAs":
+        """Default materials: bearing steel rings, steel or silicon nitride balls (by their density)."""
+        ceramic = geometry.ball.density_kg_m3 < CERAMIC_BELOW_KG_M3
+        ring = ThermoElastic(geometry.ring.E_Pa, geometry.ring.poisson, geometry.ring.density_kg_m3,
+                             BEARING_STEEL.expansion_1_K)
+        ball = ThermoElastic(geometry.ball.E_Pa, geometry.ball.poisson, geometry.ball.density_kg_m3,
+                             (SI3N4 if ceramic else BEARING_STEEL).expansion_1_K)
+        return cls(geometry, preload, ring, ball)
+
+
+def at_temperatures(bearing, temperatures):
+    """``bearing`` (a BallBearing) rebuilt at ``temperatures`` from the way it was made."""
+    from .growth import SpeedGrowth, at_temperature
+
+    made = bearing.made
+    geometry, preload, growth = at_temperature(made.geometry, made.preload, temperatures, made.ring, made.ball,
+                                               made.mounting)
+    speed_growth = SpeedGrowth(made.geometry, temperatures, made.ring, made.mounting) if made.mounting else None
+    return bearing._copy(geometry=geometry, preload=preload, speed_growth=speed_growth, growth=growth)
+
+
+def heat(bearing, speed: float, static_load, lubrication: Lubrication, lubricant_C: float) -> HeatReport:
+    """The set's heat at the operating point (module note)."""
+    load = np.zeros(5) if static_load is None else np.asarray(static_load, float)
+    state = bearing.state(load, speed)
+    options = ContactFrictionOptions(oil_volume_fraction=lubrication.oil_volume_fraction,
+                                     starvation_K_rs=STARVATION_K_RS.get(lubrication.method, 0.0))
+    h = ball_bearing_heat(state, bearing.geometry, lubrication.lubricant, lubricant_C, options, model=bearing.model)
+    parts = h.parts_W(drag_to_balls=True)
+    return HeatReport(parts["inner_ring"], parts["balls"], parts["outer_ring"],
+                      np.ravel(state.element_load_inner_N), np.ravel(state.element_load_outer_N),
+                      row_thrust_N=np.asarray(state.row_axial_load_N, float),
+                      contact_angle_inner_deg=np.mean(state.contact_angle_inner_deg, axis=1),
+                      contact_angle_outer_deg=np.mean(state.contact_angle_outer_deg, axis=1), detail=h)
