@@ -139,13 +139,16 @@ def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
 
 def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMatrices | None = None,
                     tol: float = 1e-10, max_iter: int = 100, freeze: bool = True,
-                    transient: bool = False, start: OperatingState | None = None) -> OperatingState:
+                    transient: bool = False, start: OperatingState | None = None,
+                    linearize: bool = True) -> OperatingState:
     """Static equilibrium at ``speed_rpm`` (default: the rotor's) with the bearings' nonlinear reactions.
 
     ``freeze=False`` takes the bearings as they are (already frozen at an operating point, e.g.
     the deck speed's, for the start of a run-up); ``transient=True`` freezes them for a time
     integration (the contract's ``at_operating_point``); ``start`` is the state of a neighbouring
-    speed to start from (a Campbell diagram's previous speed)."""
+    speed to start from (a Campbell diagram's previous speed).;
+    ``linearize=False`` leaves the bearings' coefficients out (None: a state only the loads of which are read,
+    e.g. a pass of the spindle's thermal loop)."""
     speed = (rotor.speed_rpm if speed_rpm is None else speed_rpm) * RPM
     shaft = assemble_shaft(rotor) if shaft is None else shaft
     K_s = shaft.stiffness(speed)
@@ -170,6 +173,8 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
             break  # nothing the loads set has changed: the equilibrium found stands
         if q is None:
             q, internal, K_lin, coef = _affine_start(frozen, idx, K_s, Q, loads, speed)
+        elif start is not None and outer == 0 and start.coefficients[0] is None:
+            K_lin = K_s  # a neighbour without coefficients (a thermal pass): Newton from its displacements
         elif start is not None and outer == 0:
             # the affine start is exact when the loads the bearings were frozen at are the answer (a
             # neighbouring speed's loads often are): better than the neighbour's displacements
@@ -187,7 +192,7 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
     else:
         log.warning("bearing loads still change by %.2g after 10 operating-point updates", change)
     if coef is None:
-        coef = [b.linearized(speed, w) for b, w in zip(frozen, loads)]
+        coef = [b.linearized(speed, w) for b, w in zip(frozen, loads)] if linearize else [None] * len(frozen)
     return OperatingState(speed, q, tuple(internal), frozen, tuple(new), tuple(loads), tuple(coef), idx, Q, shaft,
                           total)
 

@@ -55,13 +55,21 @@ class Sweep:
 class OperatingPoints:
     """The rotor at its operating points (module note).  Mutable only in its caches."""
 
-    def __init__(self, rotor: Rotor):
+    def __init__(self, rotor: Rotor, thermal_model=None):
         self.rotor = rotor
         self.shaft: ShaftMatrices = assemble_shaft(rotor)
         self.assemblies = 1
         self.solves = 0
         self._states: dict[float, OperatingState] = {}
         self._bases: dict[tuple, object] = {}
+        #: with a spindle thermal model (``model.thermal``), every operating point is the thermal equilibrium of
+        #: its speed: the bearings at the temperatures their heat and the motor's give (``spindle_thermal``)
+        self.thermal = None
+        self._thermal_states: dict[float, object] = {}
+        if thermal_model is not None:
+            from .spindle_thermal import SpindleThermal
+
+            self.thermal = SpindleThermal(rotor, thermal_model, self.shaft)
 
     @classmethod
     def of(cls, source: "Rotor | OperatingPoints") -> "OperatingPoints":
@@ -75,10 +83,26 @@ class OperatingPoints:
         rpm = float(self.rotor.speed_rpm if speed_rpm is None else speed_rpm)
         st = self._states.get(rpm)
         if st is None:
-            st = operating_state(self.rotor, rpm, self.shaft, start=start)
+            if self.thermal is not None:
+                st = self.thermal_state(rpm).operating
+            else:
+                st = operating_state(self.rotor, rpm, self.shaft, start=start)
             self.solves += 1
             self._states[rpm] = st
         return st
+
+    def thermal_state(self, speed_rpm: float):
+        """The spindle's thermal equilibrium at ``speed_rpm`` (``spindle_thermal.ThermalState``), started from
+        the nearest speed solved; needs the thermal model."""
+        if self.thermal is None:
+            raise ValueError("these operating points have no thermal model (deck section spindle_thermal)")
+        rpm = float(speed_rpm)
+        ts = self._thermal_states.get(rpm)
+        if ts is None:
+            near = min(self._thermal_states, key=lambda s: abs(s - rpm), default=None)
+            ts = self.thermal.steady(rpm, start=None if near is None else self._thermal_states[near])
+            self._thermal_states[rpm] = ts
+        return ts
 
     def along(self, speeds_rpm, tick: Callable[[], None] | None = None,
               on_state: Callable[[OperatingState, float], None] | None = None, what: str = "") -> Sweep:

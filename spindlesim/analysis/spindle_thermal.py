@@ -50,8 +50,11 @@ log = logging.getLogger(__name__)
 MAX_ITERATIONS = 60
 #: a bearing part this hot means the arrangement has run away (no lubricant survives it)
 RUNAWAY_C = 250.0
-#: a warm-up re-evaluates the bearings' heat when one of their parts has moved by this much [K]
+#: a warm-up re-evaluates the bearings' heat when one of their parts has moved by this much [K], and at least
+#: this often in time [s] (so that near its end the heat is that of the temperatures reached, not of a
+#: moment before: the warm-up then ends in the steady state)
 REFRESH_K = 0.25
+REFRESH_S = 300.0
 
 
 class ThermalRunawayError(ArithmeticError):
@@ -73,6 +76,8 @@ class ThermalState:
     iterations: int
     converged: bool = True
     time_s: float | None = None  # an instant of a warm-up
+    removed_W: dict[str, float] | None = None  # heat carried to each boundary (ambient, coolant inlet)
+    stored_W: float = 0.0  # generated - removed: zero at a steady state, what warms the parts in a warm-up
 
     @property
     def total_heat_W(self) -> float:
@@ -130,10 +135,10 @@ class SpindleThermal:
         return dataclasses.replace(self.rotor, bearings=tuple(hot)), parts, offsets
 
     # ---- one pass of the loop -------------------------------------------------------------------------
-    def _pass(self, T: dict[str, float], speed_rpm: float, start: OperatingState | None):
+    def _pass(self, T: dict[str, float], speed_rpm: float, start: OperatingState | None, linearize: bool = True):
         rotor, parts, offsets = self.rotor_at(T)
         om = speed_rpm * RPM
-        st = operating_state(rotor, speed_rpm, self.shaft, start=start)
+        st = operating_state(rotor, speed_rpm, self.shaft, start=start, linearize=linearize)
         reports: dict[str, HeatReport] = {}
         for b, load in zip(st.bearings, st.loads):
             if b.name in parts:
@@ -157,7 +162,7 @@ class SpindleThermal:
         history = []
         for it in range(1, MAX_ITERATIONS + 1):
             try:
-                st, parts, offsets, reports = self._pass(T, speed_rpm, st)
+                st, parts, offsets, reports = self._pass(T, speed_rpm, st, linearize=False)
             except (ValueError, ArithmeticError) as exc:
                 raise self._runaway(speed_rpm, history, T, f"the bearings' equilibrium failed ({exc})") from exc
             heat, contacts = self._sources(reports)
@@ -184,8 +189,12 @@ class SpindleThermal:
         motor = self.network.motor_losses(om, load_fraction=self.model.load_fraction)
         if motor is not None:
             heat.update({"motor:stator": motor.stator_W, "motor:rotor": motor.rotor_W})
+        bearing_heat, contacts = self._sources(reports)
+        Tv = np.array([T[n] for n in self._names])
+        balance = self.network.network.heat_flows(Tv, self.network.sources(bearing_heat, motor),
+                                                  conductances=self.network.conductances(om, Tv, contacts))
         return ThermalState(speed_rpm, dict(T), heat, reports, parts, offsets, st, self._tip_drift(T, st), iterations,
-                            time_s=time_s)
+                            time_s=time_s, removed_W=dict(balance.removed_W), stored_W=balance.stored_W)
 
     def _tip_drift(self, T: dict[str, float], st: OperatingState) -> float | None:
         """Axial position change of the tool tip against the housing's front face [m] (module note)."""
@@ -220,17 +229,25 @@ class SpindleThermal:
         prof = StepProfile(tuple(float(t) for t in times_s), tuple(float(s) * RPM for s in speeds_rpm))
         cache: dict = {}
 
-        def bearing_heat(w, T):
+        def bearing_heat(w, T, t):
             key_T = np.array([T[f"bearing:{n}:{p}"] for n in m.bearings for p in ("inner", "balls", "outer")])
             last = cache.get("last")
-            if last is None or last[0] != w or float(np.max(np.abs(key_T - last[1]))) > REFRESH_K:
-                st, _, _, reports = self._pass(T, w / RPM, cache.get("st") if last and last[0] == w else None)
+            if (last is None or last[0] != w or float(np.max(np.abs(key_T - last[1]))) > REFRESH_K
+                    or abs(t - last[3]) > REFRESH_S):
+                st, _, _, reports = self._pass(T, w / RPM, cache.get("st") if last and last[0] == w else None,
+                                               linearize=False)
                 cache["st"] = st
-                cache["last"] = (w, key_T, self._sources(reports)[0])
+                heat, contacts = self._sources(reports)
+                cache["last"] = (w, key_T, heat, t, contacts)
             return cache["last"][2]
 
+        def contacts(w, T, t):
+            bearing_heat(w, T, t)  # the contacts of the same bearing states as the heat
+            return cache["last"][4]
+
         t_eval = np.linspace(0.0, duration_s, samples)
-        res = self.network.warm_up(prof, duration_s, bearing_heat, load_fraction=m.load_fraction, t_eval=t_eval)
+        res = self.network.warm_up(prof, duration_s, bearing_heat, load_fraction=m.load_fraction, t_eval=t_eval,
+                                   update_K=0.1, contacts=contacts)
         out = []
         for k, t in enumerate(res.times_s):
             T = {n: float(res.temperatures_C[k, i]) for i, n in enumerate(self._names)}
@@ -240,6 +257,21 @@ class SpindleThermal:
             if progress is not None:
                 progress(k + 1, len(res.times_s))
         return tuple(out)
+
+
+def speed_limit(thermal: SpindleThermal, stable: ThermalState, runaway_rpm: float,
+                rel: float = 0.02) -> tuple[float, float]:
+    """(highest speed found stable, lowest found to run away) [rpm] between a stable equilibrium and a speed
+    that ran away, by bisection until they are within ``rel`` of each other."""
+    lo, hi, near = stable.speed_rpm, float(runaway_rpm), stable
+    while hi - lo > rel * hi:
+        mid = 0.5 * (lo + hi)
+        try:
+            near = thermal.steady(mid, start=near)
+            lo = mid
+        except ThermalRunawayError:
+            hi = mid
+    return lo, hi
 
 
 def lay_edges(lengths, start: float) -> np.ndarray:

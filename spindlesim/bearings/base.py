@@ -260,6 +260,8 @@ class AxiallyShifted(BearingBase):
         self._shift[bearing.dof_names.index("z")] = self.offset_m
 
     def __getattr__(self, name):  # name, node, dof_names, internal_mass and the family's own attributes
+        if name == "inner" or name.startswith("__"):  # not set yet (a copy or an unpickling in progress)
+            raise AttributeError(name)
         return getattr(self.inner, name)
 
     def force_and_tangent(self, q, v, t, speed, angle=None):

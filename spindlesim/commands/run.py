@@ -15,7 +15,7 @@ def command(deck, outdir, no_report):
     deck has the sections for, in this order:
 
     \b
-      thermal, coefficients          fluid-film bearings (type three_lobe or plain) and operating
+      thermal, coefficients          fluid-film bearings (type three_lobe or plain) and operating; thermal alone: a spindle_thermal section and operating
       static, modal, campbell, frf   a rotor (shaft or journal) and operating
       unbalance                      a rotor, operating and an unbalance section
       transient                      a rotor, operating and a rotor_transient section; or a transient section

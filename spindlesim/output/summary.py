@@ -280,6 +280,57 @@ def _per_bearing(f, group: str, fields: list[tuple[str, str, float, str]]):
 
 
 def _thermal(f):
+    if "spindle_thermal" in f:
+        return _spindle_thermal(f)
+    return _fluid_film_thermal(f)
+
+
+def _spindle_thermal(f):
+    """Heat, bearing temperatures, operating preload and tool-tip drift at each speed; the runaway."""
+    g = f["spindle_thermal"]
+    a = g.attrs
+    lines, data = [], {}
+    if "speed_rpm" in g:
+        sp = g["speed_rpm"][:]
+        names = [str(n) for n in g["bearing"][:].astype(str)]
+        sources = [str(n) for n in g["source"][:].astype(str)]
+        heat, inner, outer = g["heat_W"][:], g["inner_ring_C"][:], g["outer_ring_C"][:]
+        thrust = g["row_thrust_N"][:]
+        drift = g["tool_tip_axial_drift_m"][:]
+        lines.append(f"thermal equilibrium at {len(sp)} speed(s), ambient {float(a['ambient_C']):g} C, "
+                     f"{a['lubrication']}, motor load {float(a['motor_load_fraction']):g}")
+        for i, s in enumerate(sp):
+            motor = sum(heat[i, k] for k, n in enumerate(sources) if n.startswith("motor"))
+            parts = [f"{n} {heat[i, sources.index('bearing:' + n)]:.0f} W, rings {inner[i, j]:.1f}/{outer[i, j]:.1f} C, "
+                     f"preload {np.nanmax(thrust[i, j]):.0f} N" for j, n in enumerate(names) if f"bearing:{n}" in sources]
+            tip = "" if not np.isfinite(drift[i]) else f"; tool tip {drift[i] * 1e6:+.1f} um axially"
+            lines.append(f"  {s:7.0f} rpm: motor {motor:.0f} W; " + "; ".join(parts) + tip)
+        data.update(speed_rpm=sp.tolist(), heat_W=heat.tolist(), tool_tip_axial_drift_m=drift.tolist())
+    if "speed_limit_rpm" in a:
+        lo, hi = (float(v) for v in a["speed_limit_rpm"])
+        lines.append(f"  THERMAL SPEED LIMIT: stable up to {lo:.0f} rpm, runs away from {hi:.0f} rpm")
+        data["speed_limit_rpm"] = [lo, hi]
+    if "runaway" in a:
+        lines.append(f"  THERMAL RUNAWAY: {a['runaway']}")
+        data["runaway"] = str(a["runaway"])
+        if "runaway_speed_rpm" in a:
+            data["runaway_speed_rpm"] = float(a["runaway_speed_rpm"])
+    if "warm_up" in g:
+        w = g["warm_up"]
+        t = w["time_s"][:]
+        drift = w["tool_tip_axial_drift_m"][:]
+        fr = w["natural_frequency_hz"][:]
+        line = f"  warm-up over {t[-1] / 60:.0f} min ({len(t)} instants)"
+        if np.isfinite(drift).any():
+            line += f": tool tip axial drift {np.nanmin(drift) * 1e6:+.1f} .. {np.nanmax(drift) * 1e6:+.1f} um"
+        if fr.size and np.isfinite(fr[:, 0]).all():
+            line += f"; first natural frequency {fr[0, 0]:.1f} -> {fr[-1, 0]:.1f} Hz"
+        lines.append(line)
+        data["warm_up_final_drift_m"] = float(drift[-1])
+    return lines, data
+
+
+def _fluid_film_thermal(f):
     fields = [("temperature_mean_C", "T_mean", 1.0, " C"), ("temperature_out_C", "T_out", 1.0, " C"),
               ("eccentricity_ratio", "eps", 1.0, ""), ("min_film_m", "h_min", 1e6, " um"),
               ("power_loss_W", "loss", 1.0, " W"), ("heat_to_housing_W", "to housing", 1.0, " W")]

@@ -35,7 +35,7 @@ RUNS: dict[str, tuple[str, str]] = {
     "unbalance": ("rotor", "run_unbalance"),
     "transient": ("transient", "run"),
     "rotor_transient": ("transient", "run"),  # the name of seed 001 study decks (the same run)
-    "thermal": ("fluidfilm", "run_thermal"),
+    "thermal": ("thermal", "run"),
     "coefficients": ("fluidfilm", "run_coefficients"),
     "bearing": ("bearing", "run"),
     "dtrb": ("dtrb", "run_dtrb"),
@@ -82,7 +82,8 @@ def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dic
 #: sections for, in this order (analyses, what the deck needs for them).  :func:`default_analyses`
 #: applies it; ``spindlesim run --help`` says the same (tests/cli/test_run_default.py keeps them equal).
 DEFAULT_RUN: tuple[tuple[tuple[str, ...], str], ...] = (
-    (("thermal", "coefficients"), "fluid-film bearings (type three_lobe or plain) and operating"),
+    (("thermal", "coefficients"), "fluid-film bearings (type three_lobe or plain) and operating; thermal "
+                                  "alone: a spindle_thermal section and operating"),
     (("static", "modal", "campbell", "frf"), "a rotor (shaft or journal) and operating"),
     (("unbalance",), "a rotor, operating and an unbalance section"),
     (("transient",), "a rotor, operating and a rotor_transient section; or a transient section"),
@@ -100,8 +101,11 @@ def default_analyses(loaded: LoadedDeck) -> list[str]:
     rotor = (d.shaft is not None or d.journal is not None) and d.operating is not None
     if (d.shaft is not None or d.journal is not None) and d.operating is None:
         log.warning("the deck has a rotor but no 'operating' section: the rotor analyses are not run")
+    fluid = d.operating is not None and bool(bearing_entries(d, *FLUID_FILM_TYPES))
+    spindle = d.operating is not None and d.spindle_thermal is not None
     has = {
-        "thermal": d.operating is not None and bool(bearing_entries(d, *FLUID_FILM_TYPES)),
+        "thermal": fluid or spindle,
+        "coefficients": fluid,
         "static": rotor,
         "unbalance": rotor and d.unbalance is not None,
         "transient": (rotor and d.rotor_transient is not None) or d.transient is not None,
@@ -110,4 +114,7 @@ def default_analyses(loaded: LoadedDeck) -> list[str]:
         "contact": d.contact is not None,
         "chatter": d.chatter is not None,
     }
-    return [name for names, _ in DEFAULT_RUN if has[names[0]] for name in names]
+    for names, _ in DEFAULT_RUN:  # an analysis of a row runs with the row's first unless it has its own rule
+        for name in names[1:]:
+            has.setdefault(name, has[names[0]])
+    return [name for names, _ in DEFAULT_RUN for name in names if has[name]]

@@ -27,14 +27,19 @@ _POINTS: dict[int, tuple] = {}
 
 def operating_points(loaded):
     """The deck's rotor at its operating points (:class:`~spindlesim.analysis.points.OperatingPoints`),
-    shared by every analysis of one run: the shaft assembled once, each static state solved once.  One
+    shared by every analysis of one run: the shaft assembled once, each static state solved once; with
+    ``spindle_thermal: {analyses: steady}`` each at the spindle's thermal equilibrium of its speed.  One
     deck is kept at a time (a run or a sweep case reads one)."""
     got = _POINTS.get(id(loaded))
     if got is None or got[0] is not loaded:
         from ..analysis.points import OperatingPoints
         from ..model.build import build_rotor
+        from ..model.thermal import build_spindle_thermal
 
         _POINTS.clear()
-        got = (loaded, OperatingPoints(build_rotor(loaded.deck)))
+        rotor = build_rotor(loaded.deck)
+        model = build_spindle_thermal(loaded.deck, rotor)
+        thermal = model if model is not None and model.analyses == "steady" else None
+        got = (loaded, OperatingPoints(rotor, thermal))
         _POINTS[id(loaded)] = got
     return got[1]

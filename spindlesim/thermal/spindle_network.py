@@ -206,12 +206,14 @@ class SpindleNetwork:
     def warm_up(self, speed_rad_s: StepProfile | float, t_end_s: float, bearing_heat=None, *,
                 load_fraction: float | StepProfile = 0.0, initial_C: float | np.ndarray | None = None,
                 temperature_dependent: bool = True, method: str = "BDF", rtol: float = 1e-6, atol: float = 1e-4,
-                t_eval=None, dt_s: float | None = None, update_K: float = 0.5) -> TransientResult:
+                t_eval=None, dt_s: float | None = None, update_K: float = 0.5, contacts=None) -> TransientResult:
         """Warm-up through a speed profile (rad/s, e.g. the steps of an ISO 230-3 test).
-        ``bearing_heat``: mapping, or callable ``f(speed_rad_s, T_by_name) -> mapping``; the
-        profile's step times are breakpoints of the integration.  Temperature-dependent
-        conductances are re-evaluated when a node has moved by more than ``update_K`` since their
-        last evaluation (0: at every evaluation; property changes over 0.5 K are ~0.1 %)."""
+        ``bearing_heat``: mapping, or callable ``f(speed_rad_s, T_by_name, t_s) -> mapping``; the
+        profile's step times are breakpoints of the integration.  ``contacts``: the bearings' contact
+        loads for their conductances (mapping, or a callable ``f(speed_rad_s, T_by_name, t_s)``; None:
+        nominal).  Temperature-dependent conductances are re-evaluated when a node has moved by more than
+        ``update_K`` since their last evaluation (0: at every evaluation; property changes over 0.5 K
+        are ~0.1 %)."""
         prof = speed_rad_s if isinstance(speed_rad_s, StepProfile) else StepProfile((0.0,), (float(speed_rad_s),))
         load = load_fraction if isinstance(load_fraction, StepProfile) else StepProfile((0.0,), (float(load_fraction),))
         names = self.network.names
@@ -224,7 +226,7 @@ class SpindleNetwork:
             return cache[key]
 
         def src(t, T):
-            bh = bearing_heat(prof(t), dict(zip(names, T))) if callable(bearing_heat) else bearing_heat
+            bh = bearing_heat(prof(t), dict(zip(names, T)), t) if callable(bearing_heat) else bearing_heat
             return self.sources(bh, motor_at(t))
 
         if temperature_dependent:
@@ -234,7 +236,8 @@ class SpindleNetwork:
                 w = prof(t)
                 if (last.get("w") != w or update_K <= 0.0
                         or float(np.max(np.abs(T - last["T"]))) > update_K):
-                    last.update(w=w, T=T.copy(), g=self.conductances(w, T))
+                    c = contacts(w, dict(zip(names, T)), t) if callable(contacts) else contacts
+                    last.update(w=w, T=T.copy(), g=self.conductances(w, T, c))
                 return last["g"]
         else:
             gcache: dict = {}
@@ -242,7 +245,8 @@ class SpindleNetwork:
             def g(t, T):
                 w = prof(t)
                 if w not in gcache:
-                    gcache[w] = self.conductances(w)
+                    c = contacts(w, dict(zip(names, T)), t) if callable(contacts) else contacts
+                    gcache[w] = self.conductances(w, None, c)
                 return gcache[w]
 
         t0 = self.layout.ambient_C if initial_C is None else initial_C

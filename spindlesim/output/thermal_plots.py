@@ -1,0 +1,86 @@
+"""Figures of the spindle's thermal model (no physics beyond unit conversion), from the arrays of
+:class:`~spindlesim.output.thermal_writer.ThermalTable`: equilibria against speed, and a warm-up in time
+(temperatures, operating preload, the tool tip's axial drift in the style of ISO 230-3, natural frequencies)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .figures import fixed_layout, new_figure
+
+_COLORS = ("tab:red", "tab:blue", "tab:green", "tab:purple")
+
+
+def _temperatures(ax, x, t, marker) -> None:
+    for k, b in enumerate(t.bearings):
+        c = _COLORS[k % len(_COLORS)]
+        ax.plot(x, t.inner_C[:, k], "-", color=c, marker=marker, ms=3, label=f"{b}: inner ring")
+        ax.plot(x, t.outer_C[:, k], "--", color=c, marker=marker, ms=3, label=f"{b}: outer ring")
+    if t.motor_rotor_C is not None:
+        ax.plot(x, t.motor_rotor_C, ":", color="0.2", label="motor rotor")
+        ax.plot(x, t.motor_stator_C, "-.", color="0.5", label="motor stator")
+    ax.set_ylabel("temperature [degC]")
+    ax.legend(fontsize=7, ncols=3, loc="upper left")
+
+
+def _preload_and_drift(ax_p, ax_d, x, t, marker) -> None:
+    for k, b in enumerate(t.bearings):
+        ax_p.plot(x, t.preload_N[:, k], "-", color=_COLORS[k % len(_COLORS)], marker=marker, ms=3, label=b)
+    ax_p.set_ylabel("operating preload [N]\n(largest row thrust)")
+    ax_p.legend(fontsize=8, loc="upper left")
+    ax_d.plot(x, 1e6 * t.drift_m, "-", color="tab:brown", marker=marker, ms=3)
+    ax_d.set_ylabel("tool tip axial drift [um]")
+
+
+def speeds_figure(t, title: str = ""):
+    """Temperatures, operating preload and tool-tip drift at the thermal equilibrium of each speed; where a
+    runaway ended the list, a red line."""
+    fig = new_figure(9, 9, layout=None)
+    axes = fig.subplots(3, 1, sharex=True)
+    _temperatures(axes[0], t.x, t, "o")
+    _preload_and_drift(axes[1], axes[2], t.x, t, "o")
+    axes[2].set_xlabel("spindle speed [rpm]")
+    if t.runaway_rpm is not None and np.isfinite(t.runaway_rpm):
+        for ax in axes:
+            ax.axvline(t.runaway_rpm, color="tab:red", lw=1.5, ls="--")
+        axes[1].annotate(f"thermal runaway at {t.runaway_rpm:g} rpm", (t.runaway_rpm, 0.95),
+                         xycoords=("data", "axes fraction"), xytext=(-4, -10), textcoords="offset points",
+                         ha="right", fontsize=8, color="tab:red")
+        for ax in axes:
+            ax.set_xlim(right=max(t.runaway_rpm * 1.03, ax.get_xlim()[1]))
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    fixed_layout(fig, left_in=1.0, top_in=0.5, bottom_in=0.55, gap_in=0.25)
+    fig.suptitle(f"Thermal equilibrium against speed{': ' + title if title else ''}", x=0.02, ha="left",
+                 fontsize=10)
+    return fig
+
+
+def warm_up_figure(t, title: str = ""):
+    """A warm-up: temperatures, operating preload, the tool tip's axial drift (ISO 230-3 style) and the first
+    natural frequencies against time, every other speed step shaded and labelled with its speed."""
+    minutes = t.x / 60.0
+    n = 4 if t.frequency_hz is not None else 3
+    fig = new_figure(9, 2.6 * n + 0.8, layout=None)
+    axes = fig.subplots(n, 1, sharex=True)
+    _temperatures(axes[0], minutes, t, None)
+    _preload_and_drift(axes[1], axes[2], minutes, t, None)
+    if t.frequency_hz is not None:
+        for k in range(t.frequency_hz.shape[1]):
+            axes[3].plot(minutes, t.frequency_hz[:, k], "-", label=f"mode {k + 1}")
+        axes[3].set_ylabel("natural frequency [Hz]")
+        axes[3].legend(fontsize=7, ncols=4, loc="upper left")
+    axes[-1].set_xlabel("time [min]")
+    starts = np.concatenate([[0], np.flatnonzero(np.diff(t.speed_rpm)) + 1])
+    ends = np.concatenate([starts[1:], [len(minutes) - 1]])
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+        for k, (i, j) in enumerate(zip(starts, ends)):
+            if k % 2:
+                ax.axvspan(minutes[i], minutes[j], color="0.93", zorder=0)
+    for i in starts:
+        axes[0].annotate(f"{t.speed_rpm[i]:g} rpm", (minutes[i], 0.0), xycoords=("data", "axes fraction"),
+                         xytext=(2, 3), textcoords="offset points", fontsize=7, color="0.3")
+    fixed_layout(fig, left_in=1.0, top_in=0.5, bottom_in=0.55, gap_in=0.25)
+    fig.suptitle(f"Warm-up{': ' + title if title else ''}", x=0.02, ha="left", fontsize=10)
+    return fig

@@ -1,0 +1,86 @@
+"""``spindlesim thermal`` on a spindle with a ``spindle_thermal:`` section (ball bearings, motor, housing).
+
+At each speed of ``spindle_thermal.speeds_rpm`` (default: the operating speed), from the lowest up, the
+spindle's thermal equilibrium (``analysis.spindle_thermal``): heat per source, every network node's
+temperature, each bearing's operating preload (row thrust), contact angles, stiffness and axial offset,
+the tool tip's axial drift.  A speed at which the arrangement runs away ends the list: it is the speed
+limit of that arrangement, written into the file and the summary (not a failure of the run).  With
+``warm_up``: the same quantities through the speed steps in time from the cold spindle, with the first
+natural frequencies of the rotor at each instant.  thermal.h5 (group /spindle_thermal) and PNGs.
+"""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+log = logging.getLogger(__name__)
+
+#: natural frequencies reported through a warm-up
+WARM_UP_MODES = 4
+
+
+def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
+    from ..analysis.modal import modal_from_matrices
+    from ..analysis.spindle_thermal import ThermalRunawayError, speed_limit
+    from ..deck import require_rotor
+    from ..output.drawing import draw
+    from ..output.thermal_plots import speeds_figure, warm_up_figure
+    from ..output.thermal_writer import SpeedSeries, WarmUpSeries, tabulate, write_spindle_thermal
+    from .common import operating_points
+
+    require_rotor(loaded, "thermal")
+    opts = options or {}
+    d = loaded.deck
+    points = operating_points(loaded)
+    from ..analysis.points import OperatingPoints
+    from ..model.thermal import build_spindle_thermal
+
+    model = build_spindle_thermal(d, points.rotor)
+    if points.thermal is None:  # the deck's analyses do not take the thermal state: a model of its own here
+        points = OperatingPoints(points.rotor, model)
+    speeds = [float(opts["speed_rpm"])] if opts.get("speed_rpm") is not None else \
+        sorted(model.speeds_rpm) or [float(d.operating.speed_rpm)]
+    states, runaway = [], None
+    for k, rpm in enumerate(speeds):
+        try:
+            states.append(points.thermal_state(rpm))
+        except ThermalRunawayError as exc:
+            runaway = (rpm, str(exc))
+            log.warning("%s", exc)
+            break
+        if progress is not None:
+            progress(k + 1, len(speeds) + (1 if model.warm_up is not None else 0))
+    limit = None
+    if runaway is not None and states:  # the speed limit of the arrangement, to 2 %
+        limit = speed_limit(points.thermal, states[-1], runaway[0])
+        log.info("thermal speed limit between %.0f and %.0f rpm", *limit)
+    warm = None
+    if model.warm_up is not None:
+        w = model.warm_up
+        try:
+            instants = points.thermal.warm_up(w.times_s, w.speeds_rpm, w.duration_s, w.samples)
+        except ThermalRunawayError as exc:
+            runaway = runaway or (float("nan"), f"warm-up: {exc}")
+            instants = ()
+        freqs = []
+        r = points.rotor
+        for ts in instants:
+            m = modal_from_matrices(points.system(ts.operating), r.dofs, r.node_z_m, WARM_UP_MODES, ts.speed_rpm)
+            f = np.full(WARM_UP_MODES, np.nan)
+            f[:len(m.frequency_hz)] = m.frequency_hz
+            freqs.append(f)
+        if instants:
+            warm = WarmUpSeries(instants, np.array(freqs))
+    series = SpeedSeries(tuple(states), runaway, limit)
+    paths = [write_spindle_thermal(outdir / "thermal.h5", run_info, model, series, warm)]
+    if states:
+        table = tabulate(states, model.bearings, runaway_rpm=runaway[0] if runaway else None)
+        paths.append(draw(outdir / "thermal_speeds.png", speeds_figure, table, d.title))
+    if warm is not None:
+        table = tabulate(warm.states, model.bearings, frequency_hz=warm.frequency_hz, in_time=True)
+        paths.append(draw(outdir / "thermal_warm_up.png", warm_up_figure, table, d.title))
+    return paths
