@@ -101,6 +101,7 @@ class SpindleThermal:
             raise ValueError(f"spindle_thermal: bearing(s) {missing} are not on the rotor")
         self._z0 = float(rotor.node_z_m[0])
         self._tip_z = None if rotor.tool_tip is None else float(rotor.node_z_m[rotor.tool_tip]) - self._z0
+        self._cache: dict = {}
 
     # ---- temperatures -> bearings ------------------------------------------------------------------
     def parts(self, T: dict[str, float], name: str) -> BearingTemperatures:
@@ -140,12 +141,27 @@ class SpindleThermal:
         om = speed_rpm * RPM
         st = operating_state(rotor, speed_rpm, self.shaft, start=start, linearize=linearize)
         reports: dict[str, HeatReport] = {}
-        for b, load in zip(st.bearings, st.loads):
+        for b, load, idx in zip(st.bearings, st.loads, st.bearing_index):
             if b.name in parts:
-                r = b.heat(om, load, self.model.lubrication, T[f"bearing:{b.name}:balls"])
+                r = b.heat(om, load, self.model.lubrication, T[f"bearing:{b.name}:balls"], displacement=st.q[idx])
                 if r is not None:
                     reports[b.name] = r
         return st, parts, offsets, reports
+
+    def _network_step(self, om: float, T: dict[str, float], reports: dict[str, HeatReport]) -> dict[str, float]:
+        """The network's temperatures with the heat of ``reports`` and the conductances of the temperatures T
+        (one linear solve: the loop around it follows their temperature dependence, with the bearings')."""
+        heat, contacts = self._sources(reports)
+        motor = self._motor(om)
+        Tv = np.array([T[n] for n in self._names])
+        g = self.network.conductances(om, Tv, contacts)
+        return self.network.network.solve_steady(self.network.sources(heat, motor), conductances=g).as_dict()
+
+    def _motor(self, om: float):
+        key = ("motor", om)
+        if key not in self._cache:
+            self._cache[key] = self.network.motor_losses(om, load_fraction=self.model.load_fraction)
+        return self._cache[key]
 
     def _sources(self, reports: dict[str, HeatReport]):
         heat = {n: BearingHeat(r.inner_W, r.elements_W, r.outer_W) for n, r in reports.items()}
@@ -165,8 +181,7 @@ class SpindleThermal:
                 st, parts, offsets, reports = self._pass(T, speed_rpm, st, linearize=False)
             except (ValueError, ArithmeticError) as exc:
                 raise self._runaway(speed_rpm, history, T, f"the bearings' equilibrium failed ({exc})") from exc
-            heat, contacts = self._sources(reports)
-            new = self.network.steady(om, heat, load_fraction=m.load_fraction, contacts=contacts).as_dict()
+            new = self._network_step(om, T, reports)
             change = max(abs(new[n] - T[n]) for n in self._names)
             history.append((it, {n: r.row_thrust_N for n, r in reports.items()}, max(new.values()), change))
             T = new

@@ -70,8 +70,9 @@ at_temperatures(temperatures) -> bearing
     outer ring, the shaft and housing seats and the reference of the cold assembly): grown rings and
     rolling elements, fits, the operating clearance or preload that follows.  The thermal model of the
     spindle calls it at every step; a bearing without a growth model returns itself.
-heat(speed, static_load, lubrication, lubricant_C) -> HeatReport or None
-    The heat the bearing generates at the operating point (``static_load`` as in ``linearized``), split
+heat(speed, static_load, lubrication, lubricant_C, displacement=None) -> HeatReport or None
+    The heat the bearing generates at the operating point (``static_load`` as in ``linearized``; with
+    ``displacement``, the node DOFs' static displacement there, no equilibrium need be solved again), split
     where it goes (inner ring, rolling elements, outer ring) with the contact loads the thermal network's
     conductances need; ``lubrication`` a :class:`Lubrication`, ``lubricant_C`` the oil's temperature.
     None: the family has no heat model in the spindle's network (a fluid film keeps its own heat balance).
@@ -197,7 +198,7 @@ class BearingBase:
         return self
 
     def heat(self, speed: float, static_load: np.ndarray | None, lubrication: Lubrication,
-             lubricant_C: float) -> HeatReport | None:
+             lubricant_C: float, displacement: np.ndarray | None = None) -> HeatReport | None:
         return None
 
     def compiled(self) -> CompiledForce:
@@ -283,8 +284,9 @@ class AxiallyShifted(BearingBase):
     def at_temperatures(self, temperatures):
         return AxiallyShifted(self.inner.at_temperatures(temperatures), self.offset_m)
 
-    def heat(self, speed, static_load, lubrication, lubricant_C):
-        return self.inner.heat(speed, static_load, lubrication, lubricant_C)
+    def heat(self, speed, static_load, lubrication, lubricant_C, displacement=None):
+        q = None if displacement is None else np.asarray(displacement, float) + self._shift[:len(displacement)]
+        return self.inner.heat(speed, static_load, lubrication, lubricant_C, q)
 
     def frequencies_hz(self, speed):
         return self.inner.frequencies_hz(speed)

@@ -194,6 +194,37 @@ def campbell_frozen_figure(r: CampbellResult, frozen: CampbellResult, frozen_rpm
     return fig
 
 
+def campbell_thermal_figure(r: CampbellResult, cold: CampbellResult, stiffness: dict):
+    """Natural frequencies (top) and the bearings' radial stiffness (bottom) against speed, at the spindle's
+    thermal equilibrium of every speed (solid) and with the bearings as assembled (dashed)."""
+    fig = new_figure(9, 8, layout=None)
+    ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
+    s = r.speed_rpm
+    for k in range(r.frequency_hz.shape[1]):
+        ax1.plot(s, r.frequency_hz[:, k], color="tab:red", lw=1.2, label="at thermal equilibrium" if k == 0 else None)
+        ax1.plot(s, cold.frequency_hz[:, k], color="tab:blue", lw=1.0, ls="--", label="bearings cold" if k == 0 else None)
+    ax1.plot(s, s / 60.0, "k:", lw=1, label="1x")
+    top = np.nanmax(np.concatenate([r.frequency_hz.ravel(), cold.frequency_hz.ravel()]))
+    ax1.set_ylim(0, top * 1.05)
+    ax1.set_ylabel("damped natural frequency [Hz]")
+    ax1.legend(fontsize=8, loc="upper left")
+    for j, name in enumerate(stiffness["bearing"]):
+        if not np.any(stiffness["thermal"][:, j]) and not np.any(stiffness["cold"][:, j]):
+            continue  # a damper without stiffness
+        color = f"C{j}"
+        ax2.plot(stiffness["speed_rpm"], stiffness["thermal"][:, j] / 1e6, "-", color=color, label=f"{name}")
+        ax2.plot(stiffness["speed_rpm"], stiffness["cold"][:, j] / 1e6, "--", color=color)
+    ax2.set_ylabel("radial stiffness K_xx [N/um]\n(solid: thermal, dashed: cold)")
+    ax2.set_xlabel("speed [rpm]")
+    ax2.legend(fontsize=7, ncols=4, loc="upper left")
+    for ax in (ax1, ax2):
+        ax.grid(True, alpha=0.3)
+    fixed_layout(fig, left_in=1.0, top_in=0.5, gap_in=0.25)
+    fig.suptitle("Campbell diagram and bearing stiffness with and without the spindle's temperatures", x=0.02,
+                 ha="left", fontsize=10)
+    return fig
+
+
 def _frf_label(r: FrfResult) -> str:
     return f"node {r.output_node} {r.output_dof} / node {r.input_node} {r.input_dof} at {r.speed_rpm:g} rpm"
 

@@ -93,7 +93,10 @@ def _campbell_data(g: str, r: CampbellResult, full: bool) -> dict:
 
 
 def write_campbell(path: Path, run: RunInfo, r: CampbellResult, frozen: CampbellResult | None = None,
-                   frozen_rpm: float | None = None) -> Path:
+                   frozen_rpm: float | None = None, cold: CampbellResult | None = None,
+                   stiffness: dict | None = None) -> Path:
+    """campbell.h5; with the spindle's thermal model (``cold``): /campbell/cold, the diagram of the bearings as
+    assembled at the same speeds, and /campbell/bearing_stiffness_{thermal,cold}_N_m [speed, bearing] (K_xx)."""
     data = _campbell_data("/campbell", r, True)
     attrs = {"/campbell": {"tracking": "MAC between consecutive speeds",
                            "bearings": "linearised at the static state of every speed",
@@ -105,6 +108,19 @@ def write_campbell(path: Path, run: RunInfo, r: CampbellResult, frozen: Campbell
         if frozen.crossings is not None:
             attrs["/campbell/frozen/crossings"] = crossing_attrs(frozen.crossings)
         attrs["/campbell/frozen"] = {"bearings": f"coefficients frozen at {frozen_rpm:g} rpm", "frozen_rpm": frozen_rpm}
+    if cold is not None:
+        attrs["/campbell"]["bearings"] = "at the spindle's thermal equilibrium of every speed (spindle_thermal)"
+        data.update(_campbell_data("/campbell/cold", cold, False))
+        if cold.crossings is not None:
+            attrs["/campbell/cold/crossings"] = crossing_attrs(cold.crossings)
+        attrs["/campbell/cold"] = {"bearings": "as assembled (cold), linearised at the static state of every speed"}
+    if stiffness is not None:
+        g = "/campbell/bearing_stiffness"
+        data[f"{g}/speed_rpm"] = (stiffness["speed_rpm"], "rpm", ("speed_rpm",))
+        data.update(labels(g, "bearing", stiffness["bearing"]))
+        for key in ("thermal", "cold"):
+            data[f"{g}/{key}_N_m"] = Data(stiffness[key], "N/m", ("speed_rpm", "bearing"),
+                                          f"radial stiffness K_xx of each bearing, {key}")
     return write_h5(path, run, data, attrs)
 
 

@@ -72,18 +72,42 @@ def run_campbell(loaded, outdir, run, opts, progress):
     if frozen_rpm is not None and not res.interrupted:  # the same assembly, states and basis
         frozen = solve_campbell(points, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
                                 operating=operating, exact=bool(opts.get("exact")))
+    cold = stiffness = None
+    if points.thermal is not None and len(res.speed_rpm) and not res.interrupted:
+        # the bearings as assembled at the same speeds: what the temperatures change
+        from ..analysis.points import OperatingPoints
+
+        cold_points = OperatingPoints(points.rotor)
+        cold = solve_campbell(cold_points, res.speed_rpm, n_modes=modes, orders=orders, operating=operating,
+                              exact=bool(opts.get("exact")))
+        stiffness = bearing_stiffness(points, cold_points, res.speed_rpm)
     if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
         run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
-    paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm)]
+    paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm, cold, stiffness)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None))
         if frozen is not None:
             paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, frozen, frozen_rpm))
+        if cold is not None:
+            from ..output.rotor_plots import campbell_thermal_figure
+
+            paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, cold, stiffness))
     if res.incomplete_reason:
         from .status import IncompleteRun
 
         raise IncompleteRun(res.incomplete_reason, paths, interrupted=res.interrupted)
     return paths
+
+
+def bearing_stiffness(hot, cold, speeds) -> dict:
+    """Each bearing's radial stiffness K_xx [N/m] at every speed, at its thermal equilibrium ("thermal") and
+    as assembled ("cold"), from the operating points' states (solved already by the two diagrams)."""
+    names = [b.name for b in hot.rotor.bearings]
+
+    def table(points):
+        return np.array([[kb[0, 0] for kb, _ in points.state(s).coefficients] for s in speeds])
+
+    return {"speed_rpm": np.asarray(speeds, float), "bearing": names, "thermal": table(hot), "cold": table(cold)}
 
 
 def excitation_orders(d) -> tuple[float, ...]:

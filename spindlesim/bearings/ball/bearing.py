@@ -220,11 +220,11 @@ class BallBearing(BearingBase):
 
         return thermal.at_temperatures(self, temperatures)
 
-    def heat(self, speed, static_load, lubrication, lubricant_C):
+    def heat(self, speed, static_load, lubrication, lubricant_C, displacement=None):
         """Heat of the set at its operating point, split to inner ring, balls and outer ring (.thermal)."""
         from . import thermal
 
-        return thermal.heat(self, speed, static_load, lubrication, lubricant_C)
+        return thermal.heat(self, speed, static_load, lubrication, lubricant_C, displacement)
 
     # ---- kinematics -------------------------------------------------------------------------
     def cage_angle(self, shaft_angle_rad: float) -> float:
