@@ -235,6 +235,16 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
                 node_ok(path, node)
         for i, load in enumerate(rt.loads):
             node_ok(("rotor_transient", "loads", i, "node"), load.node)
+    if d.spindle_thermal is not None:
+        if d.shaft is None:
+            bad.append((("spindle_thermal",), "the spindle's thermal model needs a shaft (shaft: elements: ...)"))
+        balls = [(i, b) for i, b in enumerate(d.bearings) if b.type == "ball"]
+        if not balls:
+            bad.append((("spindle_thermal",), "the spindle's thermal model needs ball-bearing entries (type: ball)"))
+        for i, b in balls:
+            if b.temperatures_C is not None:
+                bad.append((("bearings", i, "temperatures_C"), "prescribed temperatures and the spindle_thermal "
+                                                               "section exclude each other: the section computes them"))
     if d.analyses is not None:
         for i, name in enumerate(d.analyses):
             if name not in ANALYSES:

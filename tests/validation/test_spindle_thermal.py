@@ -54,12 +54,18 @@ def _front_thrust(state) -> float:
     return float(np.max(state.bearings["front"].row_thrust_N))
 
 
-def test_axial_offsets_and_tool_tip_drift_at_a_uniform_temperature(spindle):
-    """Every node at 50 C (reference 20 C): each seat's offset is (alpha_s - alpha_h) 30 K (z_k - z_h), the
-    tip's growth alpha_s 30 K (z_tip - z_h) beyond its elastic displacement (z_h = 20 mm the housing's
-    front face; the front pair at 52.5 mm, the rear at 390 mm; the tool tip at -140 mm)."""
+def test_axial_offsets_and_tool_tip_drift_at_a_uniform_temperature():
+    """Every node at 50 C (reference 20 C), a cast-iron housing (10.5e-6 1/K) on the steel shaft
+    (11.5e-6): each seat's offset is (alpha_s - alpha_h) 30 K (z_k - z_h), 0.99 um at the front pair (52.5 mm)
+    and 11.1 um at the rear (390 mm); the tip's growth alpha_s 30 K (z_tip - z_h) = -55.2 um beyond its
+    elastic displacement (z_h = 20 mm the housing's front face; the tool tip at -140 mm)."""
+    def cast_iron(d):
+        d["spindle_thermal"]["housing"]["material"] = {"thermal_expansion_1_K": 10.5e-6}
+
+    spindle = _thermal(_deck(cast_iron))
     T = {n: 50.0 for n in spindle._names}
     a_s, a_h = spindle.model.shaft_expansion_1_K, spindle.model.housing_expansion_1_K
+    assert (a_s, a_h) == (11.5e-6, 10.5e-6)
     off = spindle.offsets(T)
     for name, z in (("front", 0.0525), ("rear", 0.390)):
         assert off[name] == pytest.approx((a_s - a_h) * 30.0 * (z - 0.020), rel=1e-12, abs=1e-15)
@@ -147,3 +153,11 @@ def test_bad_thermal_input_is_a_located_deck_error(where, value, expect):
         parse_deck(yaml.safe_dump(d), "mill.yaml")
     text = str(exc.value.issues[0])
     assert text.startswith("mill.yaml:") and expect in text
+
+
+def test_prescribed_temperatures_and_the_thermal_section_exclude_each_other():
+    d = _deck()
+    d["bearings"][0]["temperatures_C"] = {"inner_ring": 40, "outer_ring": 30, "rolling_elements": 35}
+    with pytest.raises(DeckError) as exc:
+        parse_deck(yaml.safe_dump(d), "mill.yaml")
+    assert any("bearings[0].temperatures_C" in str(i) and "exclude each other" in str(i) for i in exc.value.issues)
