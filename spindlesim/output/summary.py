@@ -411,14 +411,58 @@ def _bearing(f):
     g = f["bearing"]
     a = g.attrs
     lines = [str(a.get("operating_point", ""))]
+    d = g["displacement"][()]
+    held = str(a.get("held", ""))
+    held_dofs = held[len("held "):].split(", ") if held.startswith("held ") else []
+    held_names = {h.split(" ")[0] for h in held_dofs}
+    parts = []
+    for n, v, scale, u in zip(("x", "y", "z", "theta_x", "theta_y"), d, (1e6,) * 3 + (1e3,) * 2,
+                              ("um",) * 3 + ("mrad",) * 2):
+        shown = v * scale if abs(v * scale) >= 5e-5 else 0.0  # round-off of a symmetric state shows as 0
+        parts.append(f"{n} {shown:.4g} {u}" + (" (held)" if n in held_names else ""))
+    lines.append("  displacement " + ", ".join(parts))
+    data = {"displacement": d.tolist()}
+    if "holding_load" in g and held_names:
+        H = g["holding_load"][()]
+        H = np.where(np.abs(H) > 1e-9 * max(1.0, float(np.max(np.abs(H)))), H, 0.0)  # round-off shows as 0
+        lines.append("  holding load " + ", ".join(
+            f"{n} {v:.4g} {u}" for n, v, u, dof in zip(("Fx", "Fy", "Fz", "Mx", "My"), H, ("N",) * 3 + ("N m",) * 2,
+                                                         ("x", "y", "z", "theta_x", "theta_y")) if dof in held_names)
+            + " (what holds the held DOFs; the bearing carries the load plus this)")
+        data["holding_load"] = H.tolist()
     K = g["stiffness"][()]
     lines += _stiffness_lines(K)
-    Q = g["element_load_N"][()]
+    Qo = g["element_load_N"][()]
+    Qi = g["element_load_inner_N"][()] if "element_load_inner_N" in g else Qo
     p = g["max_pressure_Pa"][()]
-    lines.append(f"  largest ball load {Q.max():.4g} N, contact pressure {p.max() * 1e-9:.3g} GPa; "
-                 f"contact angles {g['contact_angle_inner_deg'][()].min():.1f}-{g['contact_angle_inner_deg'][()].max():.1f} deg (inner)")
-    data = {"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Q.max()),
-            "max_pressure_Pa": float(p.max())}
+    ai, ao = g["contact_angle_inner_deg"][()], g["contact_angle_outer_deg"][()]
+    lines.append(f"  largest contact loads {Qi.max():.4g} N inner, {Qo.max():.4g} N outer; contact pressure "
+                 f"{p.max() * 1e-9:.3g} GPa; contact angles {ai.min():.1f}-{ai.max():.1f} deg inner, "
+                 f"{ao.min():.1f}-{ao.max():.1f} deg outer")
+    data.update({"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Qo.max()),
+                 "max_element_load_inner_N": float(Qi.max()), "max_pressure_Pa": float(p.max())})
+    if "race_control_criterion" in g:
+        c = g["race_control_criterion"][()]
+        n_o, n_i, n_e = int(np.sum(c == 1)), int(np.sum(c == -1)), int(np.sum(c == 0))
+        setting = str(a.get("model_setting", a.get("model", "")))
+        chosen = " (chosen by model auto)" if setting == "auto" else ""
+        lines.append(f"  race control {a.get('model', '')}{chosen}; Jones' criterion: outer race at {n_o}, inner "
+                     f"race at {n_i}, either at {n_e} of {c.size} balls")
+        data["race_control_criterion"] = {"outer": n_o, "inner": n_i, "either": n_e}
+    if "truncated_contacts" in a:
+        n_cut = int(a["truncated_contacts"])
+        ei, eo = g["edge_angle_inner_deg"][()], g["edge_angle_outer_deg"][()]
+        sh_i, sh_o = float(a["shoulder_angle_inner_deg"]), float(a["shoulder_angle_outer_deg"])
+        lines.append(f"  contact ellipses reach {ei.max():.3g} deg inner, {eo.max():.3g} deg outer; shoulders at "
+                     f"{sh_i:.3g} / {sh_o:.3g} deg" + (f": TRUNCATED at {n_cut} contact(s)" if n_cut else ""))
+        data.update(truncated_contacts=n_cut, edge_angle_max_deg=[float(ei.max()), float(eo.max())])
+    if "truncation_warning" in a:
+        for m in str(a["truncation_warning"]).split(" | "):
+            lines.append(f"  WARNING: {m}")
+        data["truncation_warning"] = str(a["truncation_warning"])
+    if "tilt_warning" in a:
+        lines.append(f"  WARNING: {a['tilt_warning']}")
+        data["tilt_held_displacement"] = g["tilt_held/displacement"][()].tolist()
     if "operating_clearance_m" in g:
         c, dc = float(g["operating_clearance_m"][()]), float(g["clearance_change_m"][()])
         line = f"  at temperature: operating clearance {c * 1e6:.4g} um ({dc * 1e6:+.4g} um from growth)"

@@ -1,46 +1,33 @@
 """Compiled (numba) ball equilibria, and the row reactions on the shaft with their exact tangent.
 
 One ball, meridional plane (a, r) of :mod:`.geometry`.  Unknown: the ball centre X = (X_a, X_r)
-relative to the outer groove centre O_o (Harris and Kotzalas 2007, *Advanced Concepts*, ch. 3:
-"X1, X2"; two unknowns per ball).  With u = X and w = A - X (A = O_i - O_o, set by the inner
-ring), L_o = |u|, L_i = |w|, the contact normals are n_o = u / L_o = (sin a_o, cos a_o) and
-n_i = w / L_i = (sin a_i, cos a_i), the approaches delta_o = L_o - (f_o - 1/2) D and
-delta_i = L_i - (f_i - 1/2) D, and Q = K <delta>^1.5 (Hertz).
+relative to the outer groove centre O_o (Harris and Kotzalas 2007, *Advanced Concepts*, ch. 3).
+With u = X and w = A - X (A = O_i - O_o, set by the inner ring), the contact normals are
+n_o = u / |u| = (sin a_o, cos a_o), n_i = w / |w| = (sin a_i, cos a_i), the approaches
+delta_o = |u| - (f_o - 1/2) D, delta_i = |w| - (f_i - 1/2) D, Q = K <delta>^1.5 (Hertz), and
 
-Forces on the ball (t = (cos a, -sin a) is the in-plane tangent of a contact):
+    R = Q_i n_i - Q_o n_o + F_c e_r + c_i t_i + c_o t_o = 0,      t = (cos a, -sin a)
 
-    R = Q_i n_i - Q_o n_o + F_c e_r + c_i t_i + c_o t_o = 0
+with F_c = m (d_m / 2) w_c^2 and the friction forces c_i = lambda_i M_g / D, c_o = -lambda_o M_g / D
+that carry the gyroscopic couple M_g = J w_R w_c sin(beta) (Jones 1960), (D/2)(c_i - c_o) = M_g.
+Race control (``p[RACE]``; gamma = D / d_m, per-ball angles, outer ring fixed, w the shaft speed):
 
-- centrifugal force F_c = m (d_m / 2) w_c^2 (Harris and Kotzalas 2007, ch. 3), radial;
-- gyroscopic moment M_g = J w_R w_c sin(beta) (Jones 1960), the torque the contacts must apply
-  so that the spin axis precesses with the cage: T = w_c e_z x (J w_ball) lies along the
-  orbit tangent; in the (a, r) plane the friction couple (D/2)(c_i - c_o) equals +M_g for either
-  row direction (derivation: docs/theory.md, "Ball bearings").
-  M_g here is a size (> 0); Harris and Kotzalas' printed balance has the opposite signs on the
-  friction terms and a signed, negative w_R, which is the same force: do not combine their signs
-  with a positive M_g (tests/validation/test_ball_published.py);
-- raceway control (Jones 1960; Harris and Kotzalas ch. 3): ``outer_race_control`` puts the whole
-  couple on the outer contact (c_i = 0, c_o = -2 M_g / D, lambda_i = 0, lambda_o = 2), the
-  ball axis from no spin at the outer contact, tan(beta) = sin a_o / (cos a_o + gamma), and
-  pure rolling at both contacts then gives w_c / w = (1 - gamma cos a_i) / (1 + cos(a_i - a_o))
-  and w_R = w_c * sqrt(sin^2 a_o + (cos a_o + gamma)^2) / gamma, hence
-  M_g = J (d_m / D) w_c^2 sin a_o;  ``full`` shares it (c_i = M_g / D, c_o = -M_g / D,
-  lambda_i = lambda_o = 1) with no race-control hypothesis: the ball axis is normal to the
-  bisector of the two contact normals, beta = (a_i + a_o) / 2, rolling at both contacts gives
-  w_c / w = (1 - gamma cos a_i) / (2 + gamma (cos a_o - cos a_i)) and
-  w_R = w (1 + g cos a_o)(1 - g cos a_i) / (g cos((a_i - a_o)/2) (2 + g (cos a_o - cos a_i)))
-  (gamma = D / d_m here, per-ball angles; outer ring fixed, w the shaft speed).
+- 0, outer: lambda = (0, 2), no spin at the outer contact; w_c / w = (1 - g cos a_i)/(1 + cos(a_i - a_o)),
+  M_g = (J / g) w_c^2 sin a_o;
+- 1, full (shared): lambda = (1, 1), beta = (a_i + a_o)/2; w_c / w = (1 - g cos a_i)/(2 + g (cos a_o - cos a_i));
+- 2, inner: lambda = (2, 0), no spin at the inner contact, tan(beta) = sin a_i / (cos a_i - g);
+  w_c / w = (cos(a_i - a_o) - g cos a_o)/(1 + cos(a_i - a_o)),
+  M_g = (J / g) w^2 (1 + g cos a_o)(cos(a_i - a_o) - g cos a_o) sin a_i / (1 + cos(a_i - a_o))^2.
 
-The force of the ball on the inner ring is G = -Q_i n_i - c_i t_i at O_i, plus the couple of the
-inner friction force about O_i, -r_i c_i (tangential axis).  Damped Newton on X (``solve_ball``);
-the implicit-function theorem gives dX/dA = -(R_u - R_w)^-1 R_w and so the exact dG/dA.  At zero speed
-the ball is a two-spring series along A (closed form).
+M_g is a size (> 0); the derivations, the sense of the couple and the sign conventions of Harris and
+Kotzalas' printed balance are in docs/theory.md, "Ball bearings" (tests/validation/test_ball_published.py,
+test_ball_race_control.py).
 
-Row assembly (``evaluate_rows``): with T the 2x5 map from the node DOFs q to A (rows t_a, t_r) and
-e_m the map of the inner friction couple to (theta_x, theta_y), f += T^T G + e_m m and
-K_t -= T^T (dG/dA) T + e_m (dm/dA) T, dG/dA = G_u dX/dA + G_w (I - dX/dA); at rest
-dG/dA = -(k_n n n^T + Q/|A| t t^T).  (One module on purpose: numba's cache does not see changes
-in functions compiled from another file.)
+The ball's force on the inner ring, G = -Q_i n_i - c_i t_i at O_i plus the couple -r_i c_i of the inner
+friction force, is summed over the rows with its exact tangent through every ball equilibrium
+(implicit-function theorem; docs/theory.md, "Set reaction and the 5x5 tangent"); at rest the ball is two
+springs in series along A (closed form).  One module on purpose: numba's cache does not see changes in
+functions compiled from another file.
 """
 
 from __future__ import annotations
@@ -51,9 +38,11 @@ import numpy as np
 from numba import njit
 
 # parameter vector
-G_I, G_O, K_I, K_O, GAMMA, M_HALF_DM, J_BALL, D_BALL, R_I_GROOVE, LAM_I, LAM_O, FULL, \
+G_I, G_O, K_I, K_O, GAMMA, M_HALF_DM, J_BALL, D_BALL, R_I_GROOVE, LAM_I, LAM_O, RACE, \
     A_AX0, A_RAD0, R_I_CENTRE, K_N, A_0, SPLIT_O, FC_FLOOR = range(19)
 N_PARAMS = 19
+#: race control codes of p[RACE]
+RACE_OUTER, RACE_FULL, RACE_INNER = 0.0, 1.0, 2.0
 
 # work buffer of _terms
 B_R, B_J, B_RW, B_G, B_GU, B_GW, B_M, B_MU, B_MW, B_QI, B_QO, B_AI, B_AO, B_FC, B_MG, B_DQ, B_REST = \
@@ -62,6 +51,60 @@ N_BUF = 33
 EPS = 2.220446049250313e-16
 
 MAX_NEWTON = 80
+
+
+@njit(cache=True)
+def _speed_terms(si, ci, so, co, ai, ao, om, p):
+    """(F_c, dF_c/da_i, dF_c/da_o, M_g, dM_g/da_i, dM_g/da_o) of one ball at the contact angles, for the
+    race control p[RACE] (module docstring)."""
+    if om == 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    gam = p[GAMMA]
+    Jg = p[J_BALL] / gam
+    race = p[RACE]
+    if race == RACE_OUTER or race == RACE_INNER:
+        cd = ci * co + si * so
+        sd = si * co - ci * so
+        Dn = 1.0 + cd
+        if race == RACE_OUTER:
+            N = 1.0 - gam * ci
+            wc = om * N / Dn
+            dwi = om * (gam * si * Dn + N * sd) / (Dn * Dn)
+            dwo = -om * N * sd / (Dn * Dn)
+            Mg = Jg * wc * wc * so
+            dMi = Jg * 2.0 * wc * dwi * so
+            dMo = Jg * (2.0 * wc * dwo * so + wc * wc * co)
+        else:
+            N = cd - gam * co
+            P = 1.0 + gam * co
+            wc = om * N / Dn
+            dwi = -om * sd * P / (Dn * Dn)
+            dwo = om * ((sd + gam * so) * Dn - N * sd) / (Dn * Dn)
+            C0 = Jg * om * om
+            D2, D3 = Dn * Dn, Dn * Dn * Dn
+            Mg = C0 * P * N * si / D2
+            dMi = C0 * (P * (N * ci - sd * si) / D2 + 2.0 * P * N * si * sd / D3)
+            dMo = C0 * ((P * (sd + gam * so) - gam * so * N) * si / D2 - 2.0 * P * N * si * sd / D3)
+    else:
+        P = 1.0 + gam * co
+        N = 1.0 - gam * ci
+        S = P + N
+        wc = om * N / S
+        dwi = om * gam * si * P / (S * S)
+        dwo = om * gam * so * N / (S * S)
+        h = 0.5 * (ai - ao)
+        ch, sh = math.cos(h), math.sin(h)
+        bs = 0.5 * (ai + ao)
+        sb, cb = math.sin(bs), math.cos(bs)
+        C0 = p[J_BALL] * om * om / gam
+        den = ch * S * S
+        Mg = C0 * P * N * N * sb / den
+        dMi = C0 * (2.0 * P * N * gam * si * sb / den + P * N * N * 0.5 * cb / den
+                    + P * N * N * sb * 0.5 * sh / (ch * den) - 2.0 * P * N * N * sb * gam * si / (den * S))
+        dMo = C0 * (-gam * so * N * N * sb / den + P * N * N * 0.5 * cb / den
+                    - P * N * N * sb * 0.5 * sh / (ch * den) + 2.0 * P * N * N * sb * gam * so / (den * S))
+    mh = p[M_HALF_DM]
+    return mh * wc * wc, 2.0 * mh * wc * dwi, 2.0 * mh * wc * dwo, Mg, dMi, dMo
 
 
 @njit(cache=True)
@@ -85,43 +128,7 @@ def _terms(ua, ur, wa, wr, om, p, b):
         sq = math.sqrt(di)
         Qi = p[K_I] * di * sq
         dQi = 1.5 * p[K_I] * sq
-    Fc = dFci = dFco = Mg = dMi = dMo = 0.0
-    if om != 0.0:
-        gam = p[GAMMA]
-        if p[FULL] == 0.0:
-            cd = ci * co + si * so
-            sd = si * co - ci * so
-            N = 1.0 - gam * ci
-            Dn = 1.0 + cd
-            wc = om * N / Dn
-            dwi = om * (gam * si * Dn + N * sd) / (Dn * Dn)
-            dwo = -om * N * sd / (Dn * Dn)
-            Jg = p[J_BALL] / gam
-            Mg = Jg * wc * wc * so
-            dMi = Jg * 2.0 * wc * dwi * so
-            dMo = Jg * (2.0 * wc * dwo * so + wc * wc * co)
-        else:
-            P = 1.0 + gam * co
-            N = 1.0 - gam * ci
-            S = P + N
-            wc = om * N / S
-            dwi = om * gam * si * P / (S * S)
-            dwo = om * gam * so * N / (S * S)
-            h = 0.5 * (ai - ao)
-            ch, sh = math.cos(h), math.sin(h)
-            bs = 0.5 * (ai + ao)
-            sb, cb = math.sin(bs), math.cos(bs)
-            C0 = p[J_BALL] * om * om / gam
-            den = ch * S * S
-            Mg = C0 * P * N * N * sb / den
-            dMi = C0 * (2.0 * P * N * gam * si * sb / den + P * N * N * 0.5 * cb / den
-                        + P * N * N * sb * 0.5 * sh / (ch * den) - 2.0 * P * N * N * sb * gam * si / (den * S))
-            dMo = C0 * (-gam * so * N * N * sb / den + P * N * N * 0.5 * cb / den
-                        - P * N * N * sb * 0.5 * sh / (ch * den) + 2.0 * P * N * N * sb * gam * so / (den * S))
-        mh = p[M_HALF_DM]
-        Fc = mh * wc * wc
-        dFci = 2.0 * mh * wc * dwi
-        dFco = 2.0 * mh * wc * dwo
+    Fc, dFci, dFco, Mg, dMi, dMo = _speed_terms(si, ci, so, co, ai, ao, om, p)
     D = p[D_BALL]
     li, lo = p[LAM_I], p[LAM_O]
     cfi = li * Mg / D
