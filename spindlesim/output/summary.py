@@ -445,8 +445,13 @@ def _bearing(f):
         c = g["race_control_criterion"][()]
         n_o, n_i, n_e = int(np.sum(c == 1)), int(np.sum(c == -1)), int(np.sum(c == 0))
         setting = str(a.get("model_setting", a.get("model", "")))
+        used = g["race_control_used"][()] if "race_control_used" in g else None
+        model = str(a.get("model", ""))
+        if model == "auto" and used is not None:
+            model = (f"per ball: outer at {int(np.sum(used == 1))}, inner at {int(np.sum(used == -1))}, shared at "
+                     f"{int(np.sum(used == 0))}")
         chosen = " (chosen by model auto)" if setting == "auto" else ""
-        lines.append(f"  race control {a.get('model', '')}{chosen}; Jones' criterion: outer race at {n_o}, inner "
+        lines.append(f"  race control {model}{chosen}; Jones' criterion: outer race at {n_o}, inner "
                      f"race at {n_i}, either at {n_e} of {c.size} balls")
         data["race_control_criterion"] = {"outer": n_o, "inner": n_i, "either": n_e}
     if "truncated_contacts" in a:

@@ -36,6 +36,8 @@ QO_NOTE = "outer-race contact load Q_o"
 QI_NOTE = "inner-race contact load Q_i (Q_o - Q_i: about the centrifugal force at speed)"
 RACE_NOTE = ("Jones' race-control criterion at the ball's state: 1 only outer-race control possible "
              "(M_so > M_si cos(a_i - a_o)), -1 only inner-race control, 0 either (M_s = (3/8) Q a E(k))")
+USED_NOTE = ("race control the ball was solved with: 1 outer (the couple on the outer contact), -1 inner, 0 shared "
+             "(model full; under model auto a ball the criterion sends back and forth)")
 EDGE_NOTE = "angle the contact ellipse reaches on the thrust side of the groove: a + asin(a_H / (f D))"
 CUT_NOTE = "1: a loaded contact whose ellipse runs over the shoulder (edge stress), 0: not"
 
@@ -56,6 +58,7 @@ def _ball_datasets(base: str, rec, dims: tuple[str, ...]) -> dict:
             rec.gyroscopic_moment_Nm, "N m", dims, "gyroscopic moment J w_R w_c sin(beta) of the ball, carried by "
             "the friction of the controlling race (both contacts for model full)"),
         f"{base}/race_control_criterion": Data(np.asarray(rec.race_control, np.int8), "1", dims, RACE_NOTE),
+        f"{base}/race_control_used": Data(np.asarray(rec.race_used, np.int8), "1", dims, USED_NOTE),
         f"{base}/edge_angle_inner_deg": Data(rec.edge_angle_inner_deg, "degree", dims, EDGE_NOTE),
         f"{base}/edge_angle_outer_deg": Data(rec.edge_angle_outer_deg, "degree", dims, EDGE_NOTE),
         f"{base}/truncated_inner": Data(np.asarray(rec.truncated_inner, np.uint8), "1", dims, CUT_NOTE),

@@ -123,15 +123,30 @@ def test_jones_criterion_against_hand_calculation(rpm, expected):
     assert np.all(st.race_control == expected)
 
 
-def test_auto_picks_the_race_the_criterion_favours():
-    """model auto: inner-race control at 1000 rpm, outer at 12,000 rpm, and the shared couple (full) at
-    3000 rpm, where the outer-controlled state favours the inner race and the inner-controlled state the outer."""
+def test_auto_picks_the_race_the_criterion_admits():
+    """model auto, the preloaded pair without external load (every ball alike): inner-race control at 1000 rpm,
+    outer at 12,000 rpm, and the shared couple (full) at 3000 rpm, where the criterion admits only the inner race
+    at the outer-controlled state and only the outer race at the inner-controlled one."""
     b = bearing()
     solver = Solver.of(b, auto=True)
     assert solver.state(np.zeros(5), 1000.0 * RPM).model == "inner_race_control"
     assert solver.state(np.zeros(5), 12000.0 * RPM).model == "outer_race_control"
-    outer = b.state(np.zeros(5), 3000.0 * RPM)
-    inner = b.with_model("inner_race_control").state(np.zeros(5), 3000.0 * RPM)
-    assert outer.spin_moment_outer_Nm.sum() < outer.spin_moment_inner_Nm.sum()
-    assert inner.spin_moment_outer_Nm.sum() > inner.spin_moment_inner_Nm.sum()
-    assert solver.state(np.zeros(5), 3000.0 * RPM).model == "full"
+    assert np.all(b.state(np.zeros(5), 3000.0 * RPM).race_control == -1)
+    assert np.all(b.with_model("inner_race_control").state(np.zeros(5), 3000.0 * RPM).race_control == 1)
+    st = solver.state(np.zeros(5), 3000.0 * RPM)
+    assert st.model == "full" and np.all(st.race_used == 0)
+
+
+def test_auto_decides_per_ball():
+    """A single row under Fx 2 kN + Fz 1 kN with its tilt held, 4000 rpm: the loaded balls favour the inner race,
+    the nearly unloaded ones opposite the load the outer race; each ball gets the race its own state admits."""
+    from spindlesim.bearings.ball.equilibrium import Held
+
+    b = bearing(arrangement="single", rows=None, row_spacing_mm=None, preload=None)
+    solver = Solver.of(b, Held.of(theta_x=0.0, theta_y=0.0), auto=True)
+    st = solver.state(np.array([2000.0, 0.0, 1000.0, 0.0, 0.0]), 4000.0 * RPM)
+    assert st.model == "auto"
+    used, admitted = st.race_used, st.race_control
+    assert np.any(used == 1) and np.any(used == -1)
+    assert np.all((used == admitted) | (admitted == 0) | (used == 0))
+    assert used[0, 0] == -1 and used[0, 9] == 1  # psi 0 (most loaded) and 180 deg

@@ -55,16 +55,13 @@ from . import equilibrium as eq
 from . import kernel as kn
 from .equilibrium import FREE, BallEquilibriumError, Held
 from .geometry import BallGeometry
-from .kinematics import ball_motion
+from .kinematics import RACE_CODES, ball_motion
 from .rating import RatingInputs, lives
 from .results import BallState
 
 log = logging.getLogger(__name__)
 
 MODELS = ("outer_race_control", "inner_race_control", "full")
-#: per race control: kernel code and the shares (lambda_i, lambda_o) of the gyroscopic couple
-RACE = {"outer_race_control": (kn.RACE_OUTER, 0.0, 2.0), "inner_race_control": (kn.RACE_INNER, 2.0, 0.0),
-        "full": (kn.RACE_FULL, 1.0, 1.0)}
 #: traction coefficient above which the state warns that the gyroscopic couple exceeds friction
 TRACTION_WARN = 0.1
 
@@ -135,9 +132,11 @@ class BallBearing(BearingBase):
 
     def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
                  model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4,
-                 speed_growth=None, growth=None, shoulders: checks.Shoulders | None = None):
+                 speed_growth=None, growth=None, shoulders: checks.Shoulders | None = None, race=None):
         if model not in MODELS:
             raise ValueError(f"model must be one of {MODELS}, not {model!r}")
+        if race is not None and np.shape(race) != (geometry.rows, geometry.balls):
+            raise ValueError(f"race needs one code per ball, shape {(geometry.rows, geometry.balls)}")
         if preload.kind not in ("none", "position", "spring"):
             raise ValueError(f"unknown preload kind {preload.kind!r}")
         s = geometry.row_sign
@@ -153,7 +152,12 @@ class BallBearing(BearingBase):
         self.preload = preload
         self.name = str(name)
         self.node = int(node)
-        self.model = model
+        #: race control of every ball (RACE_CODES): the model's, or per ball (``race``, e.g. chosen by Jones'
+        #: criterion: then ``model`` reads "auto" unless every ball has the same)
+        self._race_given = None if race is None else np.array(race, dtype=np.int8)
+        self.race = np.full((geometry.rows, geometry.balls), RACE_CODES[model], np.int8) if race is None \
+            else self._race_given.copy()
+        self.model = model if race is None else _race_label(self.race)
         self.rating = rating
         self.pitch_samples = int(pitch_samples)
         #: callable speed [rad/s] -> radial growth of the inner groove centre beyond rest [m] (None: rings rigid
@@ -174,7 +178,11 @@ class BallBearing(BearingBase):
         p[kn.J_BALL] = g.ball_inertia_kg_m2
         p[kn.D_BALL] = D
         p[kn.R_I_GROOVE] = g.inner_groove_radius_m
-        p[kn.RACE], p[kn.LAM_I], p[kn.LAM_O] = RACE[model]
+        # the race control of a uniform model (kernel.evaluate_rows sets these per ball from self.race)
+        p[kn.RACE], p[kn.LAM_I], p[kn.LAM_O] = {"outer_race_control": (kn.RACE_OUTER, 0.0, 2.0),
+                                                "inner_race_control": (kn.RACE_INNER, 2.0, 0.0),
+                                                "full": (kn.RACE_FULL, 1.0, 1.0)}[model]
+        p[kn.COUPLE] = 1.0
         p[kn.A_AX0], p[kn.A_RAD0] = g.reference_axial_m, g.reference_radial_m
         p[kn.R_I_CENTRE] = g.inner_centre_radius_m
         p[kn.A_0] = g.groove_distance_m
@@ -206,14 +214,21 @@ class BallBearing(BearingBase):
         return self._copy(preload=pre)
 
     def with_model(self, model: str) -> "BallBearing":
-        return self._copy(model=model)
+        return self._copy(model=model, race=None)
+
+    def with_race(self, codes) -> "BallBearing":
+        """Same bearing with a race control per ball (RACE_CODES, shape (rows, balls))."""
+        return self._copy(race=codes)
 
     def _copy(self, **kw) -> "BallBearing":
-        args = dict(preload=self.preload, name=self.name, node=self.node, model=self.model, rating=self.rating,
-                    pitch_samples=self.pitch_samples, speed_growth=self.speed_growth, growth=self.growth,
-                    shoulders=self.shoulders)
+        args = dict(preload=self.preload, name=self.name, node=self.node, model=self._base_model(),
+                    rating=self.rating, pitch_samples=self.pitch_samples, speed_growth=self.speed_growth,
+                    growth=self.growth, shoulders=self.shoulders, race=self._race_given)
         args.update(kw)
         return BallBearing(self.geometry, **args)
+
+    def _base_model(self) -> str:
+        return self.model if self.model in MODELS else "outer_race_control"
 
     # ---- kinematics -------------------------------------------------------------------------
     def cage_angle(self, shaft_angle_rad: float) -> float:
@@ -244,7 +259,8 @@ class BallBearing(BearingBase):
         out = [np.empty((n, Z)) for _ in range(7)]
         status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
                                   self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
-                                  np.ascontiguousarray(w[idx], dtype=float), Z, X, f_rows, K_rows, *out)
+                                  np.ascontiguousarray(w[idx], dtype=float),
+                                  np.ascontiguousarray(self.race[idx], dtype=np.float64), Z, X, f_rows, K_rows, *out)
         if status >= 0:
             k, j = idx[status // Z], status % Z
             psi = phi + 2.0 * math.pi * j / Z
@@ -412,7 +428,7 @@ class BallBearing(BearingBase):
         semi_o = np.stack([g.outer.a1 * c_o, g.outer.b1 * c_o], axis=-1)
         ai_deg, ao_deg = np.degrees(r.ai), np.degrees(r.ao)
         Msi, Mso = checks.spin_moments(g, r.Qi, r.Qo, semi_i, semi_o)
-        motion = ball_motion(r.ai, r.ao, speed, g.pitch_diameter_m, g.ball_diameter_m, self.model)
+        motion = ball_motion(r.ai, r.ao, speed, g.pitch_diameter_m, g.ball_diameter_m, self.race)
         sym = g.contact_angle_rad == 0.0
         sh = self.shoulders
         edge_i = checks.edge_angles_deg(ai_deg, semi_i[..., 0], g.inner_groove_radius_m, sym)
@@ -420,6 +436,7 @@ class BallBearing(BearingBase):
         return BallState(
             displacement=np.array(q, float), reaction=ev.f.copy(), load=load.copy(), holding_load=hold,
             held=tuple(bool(m) for m in held.mask), stiffness=ev.K.copy(), speed_rad_s=speed, model=self.model,
+            race_used=self.race.copy(),
             cage_angle_rad=phi, psi_rad=r.psi.copy(), row_z_m=g.row_z_m.copy(), row_sign=g.row_sign.copy(),
             element_load_inner_N=r.Qi.copy(), element_load_outer_N=r.Qo.copy(),
             contact_angle_inner_deg=ai_deg, contact_angle_outer_deg=ao_deg,
@@ -442,13 +459,21 @@ class BallBearing(BearingBase):
         """Friction force over normal load at the contacts that carry the gyroscopic couple (the larger
         of the two when both do); inf where that contact is unloaded but a couple is needed."""
         D = self.geometry.ball_diameter_m
-        _, lam_i, lam_o = RACE[self.model]
+        lam_i = np.where(self.race > 0, 0.0, np.where(self.race < 0, 2.0, 1.0))
+        lam_o = 2.0 - lam_i
         out = np.zeros_like(r.Mg)
         with np.errstate(divide="ignore", invalid="ignore"):
             for lam, Q in ((lam_o, r.Qo), (lam_i, r.Qi)):
-                if lam:
-                    out = np.maximum(out, np.where(r.Mg != 0.0, np.abs(lam * r.Mg / D) / Q, 0.0))
+                out = np.maximum(out, np.where((r.Mg != 0.0) & (lam > 0.0), np.abs(lam * r.Mg / D) / Q, 0.0))
         return out
+
+
+def _race_label(race: np.ndarray) -> str:
+    """The model name of per-ball race codes: the common one, or "auto" when the balls differ."""
+    for name, code in RACE_CODES.items():
+        if np.all(race == code):
+            return name
+    return "auto"
 
 
 def _merge(rows: int, ia: np.ndarray, ea: _RowEval, ib: np.ndarray, eb: _RowEval) -> _RowEval:

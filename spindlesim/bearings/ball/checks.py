@@ -119,8 +119,3 @@ def race_control_criterion(Msi, Mso, contact_angle_inner_deg, contact_angle_oute
     outer_ok = Mso >= Msi * c
     inner_ok = Msi >= Mso * c
     return np.where(outer_ok & ~inner_ok, OUTER, np.where(inner_ok & ~outer_ok, INNER, EITHER)).astype(np.int8)
-
-
-def favoured_race(Msi, Mso) -> str:
-    """The race control a bearing-wide choice takes: the race whose contacts resist spin more in sum."""
-    return "outer_race_control" if float(np.sum(Mso)) >= float(np.sum(Msi)) else "inner_race_control"

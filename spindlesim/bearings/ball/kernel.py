@@ -10,7 +10,8 @@ delta_o = |u| - (f_o - 1/2) D, delta_i = |w| - (f_i - 1/2) D, Q = K <delta>^1.5 
 
 with F_c = m (d_m / 2) w_c^2 and the friction forces c_i = lambda_i M_g / D, c_o = -lambda_o M_g / D
 that carry the gyroscopic couple M_g = J w_R w_c sin(beta) (Jones 1960), (D/2)(c_i - c_o) = M_g.
-Race control (``p[RACE]``; gamma = D / d_m, per-ball angles, outer ring fixed, w the shaft speed):
+Race control (``p[RACE]``, set per ball by ``evaluate_rows`` from its ``race`` codes: 1 outer, -1 inner,
+0 full; gamma = D / d_m, per-ball angles, outer ring fixed, w the shaft speed):
 
 - 0, outer: lambda = (0, 2), no spin at the outer contact; w_c / w = (1 - g cos a_i)/(1 + cos(a_i - a_o)),
   M_g = (J / g) w_c^2 sin a_o;
@@ -39,8 +40,8 @@ from numba import njit
 
 # parameter vector
 G_I, G_O, K_I, K_O, GAMMA, M_HALF_DM, J_BALL, D_BALL, R_I_GROOVE, LAM_I, LAM_O, RACE, \
-    A_AX0, A_RAD0, R_I_CENTRE, K_N, A_0, SPLIT_O, FC_FLOOR = range(19)
-N_PARAMS = 19
+    A_AX0, A_RAD0, R_I_CENTRE, K_N, A_0, SPLIT_O, FC_FLOOR, COUPLE = range(20)
+N_PARAMS = 20  # COUPLE: factor on the couple's friction forces (1; the validation's other readings: -1, 0)
 #: race control codes of p[RACE]
 RACE_OUTER, RACE_FULL, RACE_INNER = 0.0, 1.0, 2.0
 
@@ -450,13 +451,14 @@ def _ball_tangent(b, out):
 
 
 @njit(cache=True)
-def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, Z, X, f_rows, K_rows,
+def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, race, Z, X, f_rows, K_rows,
                   Qi, Qo, ai, ao, Fc, Mg, psi):
     """Reaction and tangent of every row at the inner-ring displacement q (5).
 
     Per row k: thrust direction row_sign[k], axial position of its inner groove-centre locus
     row_zc[k], preload offset row_offset[k] (added to the axial groove-centre distance) and
-    axial displacement row_w[k] of its outer ring.  X (rows, Z, 2): ball centres, start values
+    axial displacement row_w[k] of its outer ring; race[k, j]: race control of each ball (1 outer,
+    -1 inner, 0 full).  X (rows, Z, 2): ball centres, start values
     in (NaN for the built-in guess), solutions out.  f_rows (rows, 5): force on the shaft;
     K_rows (rows, 5, 5) = -df/dq.  Returns -1, or the flat index row * Z + ball of the first
     ball whose equilibrium failed."""
@@ -467,6 +469,7 @@ def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, Z, 
     ta = np.empty(5)
     tr = np.empty(5)
     em = np.empty(5)
+    pb = p.copy()
     for k in range(n_rows):
         s = float(row_sign[k])
         zc = row_zc[k]
@@ -486,7 +489,14 @@ def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, Z, 
             for r in range(5):
                 Aa += ta[r] * q[r]
                 Ar += tr[r] * q[r]
-            xa, xr, its, ok = solve_ball(Aa, Ar, om, p, X[k, j, 0], X[k, j, 1], b)
+            code, c = race[k, j], p[COUPLE]
+            if code > 0:
+                pb[RACE], pb[LAM_I], pb[LAM_O] = RACE_OUTER, 0.0, 2.0 * c
+            elif code < 0:
+                pb[RACE], pb[LAM_I], pb[LAM_O] = RACE_INNER, 2.0 * c, 0.0
+            else:
+                pb[RACE], pb[LAM_I], pb[LAM_O] = RACE_FULL, c, c
+            xa, xr, its, ok = solve_ball(Aa, Ar, om, pb, X[k, j, 0], X[k, j, 1], b)
             if not ok:
                 return k * Z + j
             X[k, j, 0] = xa

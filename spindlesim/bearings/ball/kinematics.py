@@ -30,6 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 RACE_CONTROLS = ("outer_race_control", "inner_race_control", "full")
+#: per-ball race-control codes (the kernel's ``race``, the state's ``race_used``): 1 outer, -1 inner, 0 full
+RACE_CODES = {"outer_race_control": 1, "inner_race_control": -1, "full": 0}
 
 
 @dataclass(frozen=True)
@@ -60,10 +62,13 @@ def _ratio(spin, roll):
 
 
 def ball_motion(contact_angle_inner_rad, contact_angle_outer_rad, speed_rad_s: float, pitch_diameter_m: float,
-                ball_diameter_m: float, race_control: str) -> BallMotion:
-    """Kinematics of balls at the given contact angles (arrays) and shaft speed (module docstring)."""
-    if race_control not in RACE_CONTROLS:
-        raise ValueError(f"race control must be one of {RACE_CONTROLS}, not {race_control!r}")
+                ball_diameter_m: float, race_control) -> BallMotion:
+    """Kinematics of balls at the given contact angles (arrays) and shaft speed (module docstring);
+    ``race_control``: one of RACE_CONTROLS, or per-ball codes (RACE_CODES) shaped like the angles."""
+    if isinstance(race_control, str):
+        if race_control not in RACE_CONTROLS:
+            raise ValueError(f"race control must be one of {RACE_CONTROLS}, not {race_control!r}")
+        race_control = RACE_CODES[race_control]
     ai = np.asarray(contact_angle_inner_rad, float)
     ao = np.asarray(contact_angle_outer_rad, float)
     w = float(speed_rad_s)
@@ -77,14 +82,13 @@ def ball_motion(contact_angle_inner_rad, contact_angle_outer_rad, speed_rad_s: f
     A[..., 0, :] = np.stack([Rc * one, -h * so, h * co], axis=-1)
     A[..., 1, :] = np.stack([Rc * one, h * si, -h * ci], axis=-1)
     rhs[..., 1] = w * (Rc - h * ci)
-    if race_control == "outer_race_control":
-        A[..., 2, :] = np.stack([zero, co, so], axis=-1)
-    elif race_control == "inner_race_control":
-        A[..., 2, :] = np.stack([zero, ci, si], axis=-1)
-        rhs[..., 2] = w * si
-    else:
-        b = 0.5 * (ai + ao)
-        A[..., 2, :] = np.stack([-np.sin(b), np.cos(b), np.sin(b)], axis=-1)
+    code = np.broadcast_to(np.asarray(race_control), shape)
+    b = 0.5 * (ai + ao)
+    outer, inner = (code > 0)[..., None], (code < 0)[..., None]
+    A[..., 2, :] = np.where(outer, np.stack([zero, co, so], axis=-1),
+                            np.where(inner, np.stack([zero, ci, si], axis=-1),
+                                     np.stack([-np.sin(b), np.cos(b), np.sin(b)], axis=-1)))
+    rhs[..., 2] = np.where(code < 0, w * si, 0.0)
     x = np.linalg.solve(A, rhs[..., None])[..., 0]
     wc, Wx, Wz = x[..., 0], x[..., 1], x[..., 2]
     return BallMotion(

@@ -26,7 +26,8 @@ class BallState:
     held: tuple[bool, ...]              # (5,) DOFs held at a prescribed displacement
     stiffness: np.ndarray               # (5, 5) K = -d reaction / d displacement
     speed_rad_s: float
-    model: str                          # race control of the ball equilibria (outer_race_control, ...)
+    model: str                          # race control of the balls (outer_race_control, ...; auto: per ball)
+    race_used: np.ndarray               # (rows, Z) race control of each ball: 1 outer, -1 inner, 0 full
     cage_angle_rad: float
     psi_rad: np.ndarray                 # (rows, Z) ball azimuths
     row_z_m: np.ndarray                 # (rows,) axial position of each row
@@ -102,7 +103,8 @@ class BallSweep:
     values: np.ndarray                   # (n,) swept values, in the unit of ``name``
     load: np.ndarray                     # (n, 5) load on the bearing at each point (given + holding)
     holding_load: np.ndarray             # (n, 5) holding load of the held DOFs (0 at free DOFs)
-    model: tuple[str, ...]               # (n,) race control of each point (auto chooses per point)
+    model: tuple[str, ...]               # (n,) race control of each point (auto: per ball, race_used)
+    race_used: np.ndarray                # (n, rows, Z) race control of each ball: 1 outer, -1 inner, 0 full
     speed_rad_s: np.ndarray              # (n,)
     displacement: np.ndarray             # (n, 5)
     stiffness: np.ndarray                # (n, 5, 5)
@@ -133,7 +135,7 @@ def sweep_from_states(name: str, values, states: list[BallState], preload_label:
 
     return BallSweep(
         name=name, values=np.asarray(values, float), load=st("load"), holding_load=st("holding_load"),
-        model=tuple(s.model for s in states),
+        model=tuple(s.model for s in states), race_used=st("race_used"),
         speed_rad_s=st("speed_rad_s"), displacement=st("displacement"), stiffness=st("stiffness"),
         element_load_inner_N=st("element_load_inner_N"), element_load_outer_N=st("element_load_outer_N"),
         contact_angle_inner_deg=st("contact_angle_inner_deg"), contact_angle_outer_deg=st("contact_angle_outer_deg"),

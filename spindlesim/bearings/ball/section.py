@@ -47,7 +47,7 @@ Standalone section (``spindlesim bearing``), the same keys plus::
       load: {fx_N: 0.0, fy_N: 0.0, fz_N: 0.0, mx_Nm: 0.0, my_Nm: 0.0}   # shaft on bearing
       speed_rpm: 10000.0
       held: {theta_x_mrad: 0.0, theta_y_mrad: 0.0}   # DOFs held at a displacement, the others free (x_um ...)
-      model: auto                      # the section also takes auto: Jones' criterion at every point
+      model: auto                      # the section also takes auto: Jones' criterion per ball and point
       shoulders: {inner_height_mm: 3.8, outer_height_mm: 3.8}   # or *_angle_deg; default 0.3 D each
       sweeps:
         preload: {start: 0.0, stop: 40.0, count: 21}   # axial_um or axial_N (the preload's kind)
@@ -317,8 +317,8 @@ class BallSection(_BallKeys):
     """Optional sweeps over preload, load and speed, each around the operating point."""
     model: Literal["outer_race_control", "inner_race_control", "full", "auto"] = "outer_race_control"
     """Race control of the balls: outer_race_control, inner_race_control or full (as for a rotor entry), or auto:
-    at every operating point the race whose contacts resist spin more in sum (Jones' criterion) controls, and
-    full when the two answers contradict each other (docs/theory.md, "Race control")."""
+    at every operating point each ball takes the race Jones' criterion admits at its own state, and shares the
+    couple (full) when the criterion sends it back and forth (docs/theory.md, "Race control")."""
     held: HeldDofs = HeldDofs()
     """DOFs held at prescribed displacements, e.g. {theta_x_mrad: 0, theta_y_mrad: 0} for a single row whose
     tilt the shaft holds; the others free under `load`. Default: every DOF free (the load alone decides)."""

@@ -2,8 +2,8 @@
 
 Each point is a full set equilibrium (:meth:`BallBearing.state`) at cage angle 0 with the section's
 held DOFs; consecutive points start from the previous displacement (the result does not depend on
-it).  With ``model: auto`` every point takes the race control Jones' criterion favours there
-(:func:`Solver.state`).  The run then checks what the states say about themselves: a free inner ring
+it).  With ``model: auto`` every ball of every point takes the race control Jones' criterion admits
+at its state (:meth:`Solver.state`).  The run then checks what the states say about themselves: a free inner ring
 that tilts more than :data:`TILT_WARN_RAD` (with the state it would have with the tilt held) and
 contact ellipses that run over a shoulder; each finding is logged and kept on the run for the file.
 """
@@ -16,8 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .bearing import MODELS, BallBearing
-from .checks import favoured_race
+from .bearing import BallBearing
 from .equilibrium import FREE, Held
 from .results import BallState, BallSweep, sweep_from_states
 
@@ -30,43 +29,54 @@ RPM = math.pi / 30.0
 TILT_WARN_RAD = 1e-3
 
 
+#: most solves of one point under model auto (each ball settles in two or three)
+MAX_AUTO_SOLVES = 8
+
+
 @dataclass(frozen=True)
 class Solver:
-    """How the points of a run are solved: the bearing in each race control, the held DOFs, auto or not."""
+    """How the points of a run are solved: the bearing, the held DOFs, and auto (race control per ball)."""
 
-    variants: dict[str, BallBearing]
+    bearing: BallBearing
     held: Held = FREE
     auto: bool = False
-    setting: str = "outer_race_control"
 
     @classmethod
     def of(cls, bearing: BallBearing, held: Held = FREE, auto: bool = False) -> "Solver":
-        variants = {m: bearing if m == bearing.model else bearing.with_model(m) for m in MODELS} if auto else \
-            {bearing.model: bearing}
-        return cls(variants, held, auto, "auto" if auto else bearing.model)
+        return cls(bearing.with_model("outer_race_control") if auto else bearing, held, auto)
 
     @property
-    def bearing(self) -> BallBearing:
-        return next(iter(self.variants.values())) if not self.auto else self.variants["outer_race_control"]
+    def setting(self) -> str:
+        return "auto" if self.auto else self.bearing.model
 
     def with_preload(self, value: float) -> "Solver":
-        return Solver({m: b.with_preload(value) for m, b in self.variants.items()}, self.held, self.auto, self.setting)
+        return Solver(self.bearing.with_preload(value), self.held, self.auto)
 
     def state(self, load, speed: float, q0=None) -> BallState:
-        """The state at (load, speed); with auto: outer-race control unless the contacts of that state resist
-        spin more at the inner race, then inner-race control unless its state says the opposite, then full."""
+        """The state at (load, speed).  auto: every ball starts under outer-race control and then takes the race
+        Jones' criterion admits at its state (keeping its race where both are admitted), solved again until no
+        ball changes; a ball sent back to a race it has left shares the couple (full)."""
         load = np.asarray(load, float)
-        if not self.auto:
-            return self.bearing.state(load, speed, 0.0, self.held, q0)
-        st = self.variants["outer_race_control"].state(load, speed, 0.0, self.held, q0)
-        if speed == 0.0 or favoured_race(st.spin_moment_inner_Nm, st.spin_moment_outer_Nm) == "outer_race_control":
+        st = self.bearing.state(load, speed, 0.0, self.held, q0)
+        if not self.auto or speed == 0.0:
             return st
-        inner = self.variants["inner_race_control"].state(load, speed, 0.0, self.held, st.displacement)
-        if favoured_race(inner.spin_moment_inner_Nm, inner.spin_moment_outer_Nm) == "inner_race_control":
-            return inner
-        log.info("bearing %r at %.6g rpm: Jones' criterion favours the inner race under outer-race control and the "
-                 "outer race under inner-race control; the couple is shared (full)", self.bearing.name, speed / RPM)
-        return self.variants["full"].state(load, speed, 0.0, self.held, st.displacement)
+        codes = st.race_used.copy()
+        tried = {1: codes == 1, -1: codes == -1}
+        locked = np.zeros(codes.shape, bool)
+        for _ in range(MAX_AUTO_SOLVES):
+            want = np.where(locked, 0, np.where(st.race_control == 0, codes, st.race_control)).astype(np.int8)
+            back = (want != codes) & (want != 0) & np.where(want > 0, tried[1], tried[-1])
+            want[back] = 0
+            locked |= back
+            if np.array_equal(want, codes):
+                return st
+            tried[1] |= want == 1
+            tried[-1] |= want == -1
+            codes = want
+            st = self.bearing.with_race(codes).state(load, speed, 0.0, self.held, st.displacement)
+        log.warning("bearing %r at %.6g rpm: the race control of the balls did not settle in %d solves under model "
+                    "auto; the last state is kept", self.bearing.name, speed / RPM, MAX_AUTO_SOLVES)
+        return st
 
     def chain(self, points) -> list[BallState]:
         """States of (solver, load, speed) triples, each started from the previous displacement."""
@@ -175,7 +185,7 @@ def tilt_check(solver: Solver, state: BallState, load: np.ndarray, speed: float)
         return None
     mask = tuple(solver.held.mask[:3]) + (True, True)
     values = tuple(solver.held.values[:3]) + (0.0, 0.0)
-    held = Solver(solver.variants, Held(mask, values), solver.auto, solver.setting)
+    held = Solver(solver.bearing, Held(mask, values), solver.auto)
     st = held.state(load, speed, state.displacement)
     name = solver.bearing.name
     d, h = state.displacement, st.displacement
