@@ -412,61 +412,44 @@ def _bearing(f):
     a = g.attrs
     lines = [str(a.get("operating_point", ""))]
     d = g["displacement"][()]
-    held = str(a.get("held", ""))
-    held_dofs = held[len("held "):].split(", ") if held.startswith("held ") else []
-    held_names = {h.split(" ")[0] for h in held_dofs}
-    parts = []
-    for n, v, scale, u in zip(("x", "y", "z", "theta_x", "theta_y"), d, (1e6,) * 3 + (1e3,) * 2,
-                              ("um",) * 3 + ("mrad",) * 2):
-        shown = v * scale if abs(v * scale) >= 5e-5 else 0.0  # round-off of a symmetric state shows as 0
-        parts.append(f"{n} {shown:.4g} {u}" + (" (held)" if n in held_names else ""))
-    lines.append("  displacement " + ", ".join(parts))
+    held = set(str(a.get("held_dofs", "")).split(", ")) - {""}
+    dofs, loads = ("x", "y", "z", "theta_x", "theta_y"), ("Fx", "Fy", "Fz", "Mx", "My")
+    shown = [v * s if abs(v * s) >= 5e-5 else 0.0 for v, s in zip(d, (1e6,) * 3 + (1e3,) * 2)]  # round-off: 0
+    lines.append("  displacement " + ", ".join(f"{n} {v:.4g} {'um' if k < 3 else 'mrad'}" + (" (held)" if n in held
+                                               else "") for k, (n, v) in enumerate(zip(dofs, shown))))
     data = {"displacement": d.tolist()}
-    if "holding_load" in g and held_names:
+    if held:
         H = g["holding_load"][()]
-        H = np.where(np.abs(H) > 1e-9 * max(1.0, float(np.max(np.abs(H)))), H, 0.0)  # round-off shows as 0
-        lines.append("  holding load " + ", ".join(
-            f"{n} {v:.4g} {u}" for n, v, u, dof in zip(("Fx", "Fy", "Fz", "Mx", "My"), H, ("N",) * 3 + ("N m",) * 2,
-                                                         ("x", "y", "z", "theta_x", "theta_y")) if dof in held_names)
-            + " (what holds the held DOFs; the bearing carries the load plus this)")
+        H = np.where(np.abs(H) > 1e-9 * max(1.0, float(np.max(np.abs(H)))), H, 0.0)
+        lines.append("  holding load " + ", ".join(f"{m} {H[k]:.4g} {'N' if k < 3 else 'N m'}"
+                                                   for k, (n, m) in enumerate(zip(dofs, loads)) if n in held)
+                     + " (what holds the held DOFs; the bearing carries the load plus this)")
         data["holding_load"] = H.tolist()
     K = g["stiffness"][()]
     lines += _stiffness_lines(K)
-    Qo = g["element_load_N"][()]
-    Qi = g["element_load_inner_N"][()] if "element_load_inner_N" in g else Qo
-    p = g["max_pressure_Pa"][()]
+    Qi, Qo, p = g["element_load_inner_N"][()], g["element_load_N"][()], g["max_pressure_Pa"][()]
     ai, ao = g["contact_angle_inner_deg"][()], g["contact_angle_outer_deg"][()]
     lines.append(f"  largest contact loads {Qi.max():.4g} N inner, {Qo.max():.4g} N outer; contact pressure "
                  f"{p.max() * 1e-9:.3g} GPa; contact angles {ai.min():.1f}-{ai.max():.1f} deg inner, "
                  f"{ao.min():.1f}-{ao.max():.1f} deg outer")
     data.update({"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Qo.max()),
                  "max_element_load_inner_N": float(Qi.max()), "max_pressure_Pa": float(p.max())})
-    if "race_control_criterion" in g:
-        c = g["race_control_criterion"][()]
-        n_o, n_i, n_e = int(np.sum(c == 1)), int(np.sum(c == -1)), int(np.sum(c == 0))
-        setting = str(a.get("model_setting", a.get("model", "")))
-        used = g["race_control_used"][()] if "race_control_used" in g else None
-        model = str(a.get("model", ""))
-        if model == "auto" and used is not None:
-            model = (f"per ball: outer at {int(np.sum(used == 1))}, inner at {int(np.sum(used == -1))}, shared at "
-                     f"{int(np.sum(used == 0))}")
-        chosen = " (chosen by model auto)" if setting == "auto" else ""
-        lines.append(f"  race control {model}{chosen}; Jones' criterion: outer race at {n_o}, inner "
-                     f"race at {n_i}, either at {n_e} of {c.size} balls")
-        data["race_control_criterion"] = {"outer": n_o, "inner": n_i, "either": n_e}
-    if "truncated_contacts" in a:
-        n_cut = int(a["truncated_contacts"])
-        ei, eo = g["edge_angle_inner_deg"][()], g["edge_angle_outer_deg"][()]
-        sh_i, sh_o = float(a["shoulder_angle_inner_deg"]), float(a["shoulder_angle_outer_deg"])
-        lines.append(f"  contact ellipses reach {ei.max():.3g} deg inner, {eo.max():.3g} deg outer; shoulders at "
-                     f"{sh_i:.3g} / {sh_o:.3g} deg" + (f": TRUNCATED at {n_cut} contact(s)" if n_cut else ""))
-        data.update(truncated_contacts=n_cut, edge_angle_max_deg=[float(ei.max()), float(eo.max())])
-    if "truncation_warning" in a:
-        for m in str(a["truncation_warning"]).split(" | "):
-            lines.append(f"  WARNING: {m}")
-        data["truncation_warning"] = str(a["truncation_warning"])
+    c, used, model = g["race_control_criterion"][()], g["race_control_used"][()], str(a.get("model", ""))
+    count = {"outer": int(np.sum(c == 1)), "inner": int(np.sum(c == -1)), "either": int(np.sum(c == 0))}
+    if model == "auto":
+        model = f"per ball: outer at {int(np.sum(used == 1))}, inner at {int(np.sum(used == -1))}, shared at " \
+                f"{int(np.sum(used == 0))}"
+    lines.append(f"  race control {model}{' (model auto)' if a.get('model_setting') == 'auto' else ''}; Jones' "
+                 f"criterion: outer race at {count['outer']}, inner race at {count['inner']}, either at "
+                 f"{count['either']} of {c.size} balls")
+    n_cut, ei, eo = int(a["truncated_contacts"]), g["edge_angle_inner_deg"][()], g["edge_angle_outer_deg"][()]
+    lines.append(f"  contact ellipses reach {ei.max():.3g} deg inner, {eo.max():.3g} deg outer; shoulders at "
+                 f"{float(a['shoulder_angle_inner_deg']):.3g} / {float(a['shoulder_angle_outer_deg']):.3g} deg"
+                 + (f": TRUNCATED at {n_cut} contact(s)" if n_cut else ""))
+    data.update(race_control_criterion=count, truncated_contacts=n_cut)
+    warnings = str(a["truncation_warning"]).split(" | ") if "truncation_warning" in a else []
+    lines += [f"  WARNING: {m}" for m in warnings + ([str(a["tilt_warning"])] if "tilt_warning" in a else [])]
     if "tilt_warning" in a:
-        lines.append(f"  WARNING: {a['tilt_warning']}")
         data["tilt_held_displacement"] = g["tilt_held/displacement"][()].tolist()
     if "operating_clearance_m" in g:
         c, dc = float(g["operating_clearance_m"][()]), float(g["clearance_change_m"][()])

@@ -171,7 +171,7 @@ def _check_attrs(res) -> tuple[dict, dict]:
     the /bearing/tilt_held datasets."""
     b, st = res.bearing, res.state
     sh = b.shoulders
-    attrs = {"held": res.held.label(), "model_setting": res.model_setting,
+    attrs = {"held": res.held.label(), "held_dofs": ", ".join(res.held.names), "model_setting": res.model_setting,
              "shoulder_angle_inner_deg": math.degrees(sh.inner_angle_rad),
              "shoulder_angle_outer_deg": math.degrees(sh.outer_angle_rad),
              "shoulder_height_inner_m": sh.inner_height_m, "shoulder_height_outer_m": sh.outer_height_m,

@@ -64,12 +64,22 @@ def test_rotor_entries_take_the_three_race_controls_but_not_auto():
     (dict(shoulders={"inner_height_mm": 7.0}), "bearing.shoulders.inner_height_mm", "not below the groove radius"),
     (dict(shoulders={"outer_height_mm": 3.0, "outer_angle_deg": 60.0}), "bearing.shoulders", "not both"),
     (dict(held={"theta_x_mrad": 150.0}), "bearing.held.theta_x_mrad", "must be <= 100"),
+    (dict(held={"x_um": 700.0}, load={}), "bearing.held.x_um", "beyond the groove-centre distance"),
+    (dict(held={"theta_y_mrad": 15.0}), "bearing.held.theta_y_mrad", "the rings would pass through the balls"),
 ])
 def test_bad_held_dofs_and_shoulders_are_located_deck_errors(changes, where, words):
     with pytest.raises(DeckError) as exc:
         parse_deck(deck_text(**changes), "b.yaml")
     text = str(exc.value)
     assert where in text and words in text, text
+
+
+def test_a_displacement_past_the_grooves_is_a_reported_error():
+    from spindlesim.bearings.ball.bearing import BallEquilibriumError
+
+    b = bearing(**{k: v for k, v in SINGLE.items() if k != "load"})
+    with pytest.raises(BallEquilibriumError, match="past the outer one at a ball"):
+        b.state_at(np.array([1e-3, 0.0, 0.0, 0.0, 0.0]), 4000.0 * RPM)
 
 
 def run_cli(tmp_path, name, **changes):

@@ -257,10 +257,18 @@ class BallBearing(BearingBase):
         X = np.ascontiguousarray(self._X[idx])
         f_rows, K_rows = np.empty((n, 5)), np.empty((n, 5, 5))
         out = [np.empty((n, Z)) for _ in range(7)]
-        status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
-                                  self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
-                                  np.ascontiguousarray(w[idx], dtype=float),
-                                  np.ascontiguousarray(self.race[idx], dtype=np.float64), Z, X, f_rows, K_rows, *out)
+        try:
+            status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
+                                      self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
+                                      np.ascontiguousarray(w[idx], dtype=float),
+                                      np.ascontiguousarray(self.race[idx], dtype=np.float64), Z, X, f_rows, K_rows,
+                                      *out)
+        except ZeroDivisionError:  # a degenerate ball (e.g. opposite contact normals): the rings pass a ball
+            self._X[:] = np.nan
+            raise BallEquilibriumError(
+                f"bearing {self.name!r}: the inner ring at q = {np.round(np.asarray(q) * 1e6, 4).tolist()} (um, urad) "
+                f"moves its groove centre past the outer one at a ball (their distance as made: "
+                f"{g.groove_distance_m * 1e6:.4g} um): no ball fits there") from None
         if status >= 0:
             k, j = idx[status // Z], status % Z
             psi = phi + 2.0 * math.pi * j / Z

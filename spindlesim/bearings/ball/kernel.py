@@ -1,34 +1,29 @@
 """Compiled (numba) ball equilibria, and the row reactions on the shaft with their exact tangent.
 
-One ball, meridional plane (a, r) of :mod:`.geometry`.  Unknown: the ball centre X = (X_a, X_r)
-relative to the outer groove centre O_o (Harris and Kotzalas 2007, *Advanced Concepts*, ch. 3).
-With u = X and w = A - X (A = O_i - O_o, set by the inner ring), the contact normals are
-n_o = u / |u| = (sin a_o, cos a_o), n_i = w / |w| = (sin a_i, cos a_i), the approaches
-delta_o = |u| - (f_o - 1/2) D, delta_i = |w| - (f_i - 1/2) D, Q = K <delta>^1.5 (Hertz), and
+One ball in its meridional plane (a, r) (:mod:`.geometry`; Harris and Kotzalas 2007, *Advanced Concepts*,
+ch. 3); unknown: the ball centre X from the outer groove centre O_o.  With u = X, w = A - X (A = O_i - O_o,
+set by the inner ring): n_o = u/|u| = (sin a_o, cos a_o), n_i = w/|w|, delta_o = |u| - (f_o - 1/2) D,
+delta_i = |w| - (f_i - 1/2) D, Q = K <delta>^1.5 (Hertz), and
 
     R = Q_i n_i - Q_o n_o + F_c e_r + c_i t_i + c_o t_o = 0,      t = (cos a, -sin a)
 
-with F_c = m (d_m / 2) w_c^2 and the friction forces c_i = lambda_i M_g / D, c_o = -lambda_o M_g / D
-that carry the gyroscopic couple M_g = J w_R w_c sin(beta) (Jones 1960), (D/2)(c_i - c_o) = M_g.
-Race control (``p[RACE]``, set per ball by ``evaluate_rows`` from its ``race`` codes: 1 outer, -1 inner,
-0 full; gamma = D / d_m, per-ball angles, outer ring fixed, w the shaft speed):
+with F_c = m (d_m / 2) w_c^2 and friction forces c_i = lambda_i M_g / D, c_o = -lambda_o M_g / D carrying
+the gyroscopic couple M_g = J w_R w_c sin(beta) (Jones 1960; M_g a size), (D/2)(c_i - c_o) = M_g.  Race
+control (``p[RACE]``, set per ball by ``evaluate_rows`` from its ``race`` code: 1 outer, -1 inner, 0 full;
+g = D / d_m, per-ball angles, outer ring fixed, w the shaft speed):
 
-- 0, outer: lambda = (0, 2), no spin at the outer contact; w_c / w = (1 - g cos a_i)/(1 + cos(a_i - a_o)),
+- outer: lambda = (0, 2), no spin at the outer contact; w_c / w = (1 - g cos a_i)/(1 + cos(a_i - a_o)),
   M_g = (J / g) w_c^2 sin a_o;
-- 1, full (shared): lambda = (1, 1), beta = (a_i + a_o)/2; w_c / w = (1 - g cos a_i)/(2 + g (cos a_o - cos a_i));
-- 2, inner: lambda = (2, 0), no spin at the inner contact, tan(beta) = sin a_i / (cos a_i - g);
+- full (shared): lambda = (1, 1), beta = (a_i + a_o)/2; w_c / w = (1 - g cos a_i)/(2 + g (cos a_o - cos a_i));
+- inner: lambda = (2, 0), no spin at the inner contact, tan(beta) = sin a_i / (cos a_i - g);
   w_c / w = (cos(a_i - a_o) - g cos a_o)/(1 + cos(a_i - a_o)),
   M_g = (J / g) w^2 (1 + g cos a_o)(cos(a_i - a_o) - g cos a_o) sin a_i / (1 + cos(a_i - a_o))^2.
 
-M_g is a size (> 0); the derivations, the sense of the couple and the sign conventions of Harris and
-Kotzalas' printed balance are in docs/theory.md, "Ball bearings" (tests/validation/test_ball_published.py,
-test_ball_race_control.py).
-
-The ball's force on the inner ring, G = -Q_i n_i - c_i t_i at O_i plus the couple -r_i c_i of the inner
-friction force, is summed over the rows with its exact tangent through every ball equilibrium
-(implicit-function theorem; docs/theory.md, "Set reaction and the 5x5 tangent"); at rest the ball is two
-springs in series along A (closed form).  One module on purpose: numba's cache does not see changes in
-functions compiled from another file.
+Derivations, the sense of the couple and Harris and Kotzalas' sign conventions: docs/theory.md, "Ball
+bearings".  The ball's force on the inner ring, G = -Q_i n_i - c_i t_i at O_i plus the couple -r_i c_i, is
+summed over the rows with its exact tangent through every ball equilibrium (implicit-function theorem); at
+rest the ball is two springs in series along A (closed form).  One module on purpose: numba's cache does not
+see changes in functions compiled from another file.
 """
 
 from __future__ import annotations
@@ -376,16 +371,12 @@ def _solve_nested(Aa, Ar, om, p, b):
 
 @njit(cache=True)
 def solve_ball(Aa, Ar, om, p, xa, xr, b):
-    """Ball equilibrium for the groove-centre vector (Aa, Ar) at shaft speed om.
-
-    (xa, xr): a start (warm start; NaN for none).  Returns (X_a, X_r, iterations, ok); b holds the
-    terms at the solution.  At rest the closed form is used (iterations 0), and also when the
-    centrifugal force is below p[FC_FLOOR] (1e-8 of the ball's series Hertz load at 1 um approach:
-    below 0.04 rad/s for a 12.7 mm steel ball on a 90 mm pitch circle), where the ball would only be
-    pushed into a wedge by a force of no consequence.  Starts: the warm
-    start if its residual is below that of the built-in guess (the ball on the line O_o -> O_i,
-    pressed into the outer groove by its rest load plus the centrifugal force), else the guess;
-    the other start if Newton fails from the first; then the bracketing fallback _solve_nested."""
+    """Ball equilibrium for the groove-centre vector (Aa, Ar) at shaft speed om; (xa, xr): a warm start (NaN:
+    none).  Returns (X_a, X_r, iterations, ok); b holds the terms at the solution.  The closed form at rest
+    and below p[FC_FLOOR] of centrifugal force (1e-8 of the series Hertz load at 1 um: 0.04 rad/s for a
+    12.7 mm ball on a 90 mm pitch circle).  Starts: the warm start if its residual beats the built-in guess
+    (the ball on the line O_o -> O_i, pressed outwards by its rest load plus F_c), else the guess; the other
+    if Newton fails from the first; then the bracketing fallback _solve_nested."""
     L = math.sqrt(Aa * Aa + Ar * Ar)
     wc = 0.5 * om * (1.0 - p[GAMMA] * Ar / L)
     fc = p[M_HALF_DM] * wc * wc

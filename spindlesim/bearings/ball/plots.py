@@ -116,6 +116,10 @@ def _stiffness_panels(fig: Figure, x: np.ndarray, sweep: BallSweep, x_label: str
                 tw.plot(x, sweep.row_axial_load_N[:, k], ":", color=COLORS[k % 4], lw=1.2,
                         label=f"thrust row {k + 1} [N]")
             tw.set_ylabel("row thrust [N]")
+            thrust = sweep.row_axial_load_N
+            if np.ptp(thrust) <= 1e-6 * max(1.0, float(np.max(np.abs(thrust)))):  # constant: no round-off scale
+                mid = float(np.mean(thrust))
+                tw.set_ylim(mid - 0.1 * abs(mid) - 1.0, mid + 0.1 * abs(mid) + 1.0)
             tw.legend(fontsize=7, loc="best")
 
 

@@ -397,6 +397,14 @@ def section_checks(sec: BallSection) -> list[tuple[tuple, str]]:
                                        f"carries what holds it (the holding load); drop load.{comp} or free {dof}"))
         if sec.sweeps.load is not None and sec.sweeps.load.component == comp:
             bad.append((("sweeps", "load", "component"), f"{comp} is the load of the held DOF {dof} (held.{key})"))
+    A0_um = 1e3 * (sec.inner_conformity + sec.outer_conformity - 1.0) * sec.ball_diameter_mm
+    R_mm = 0.5 * sec.pitch_diameter_mm
+    for key, size in (("x_um", 1.0), ("y_um", 1.0), ("z_um", 1.0), ("theta_x_mrad", R_mm), ("theta_y_mrad", R_mm)):
+        v = getattr(sec.held, key)
+        if v is not None and abs(v) * size >= A0_um:
+            bad.append((("held", key), f"{v:g} moves the inner groove centre {abs(v) * size:.4g} um at a ball, beyond "
+                                       f"the groove-centre distance (f_i + f_o - 1) D = {A0_um:.4g} um: the rings "
+                                       "would pass through the balls"))
     if sec.held.z_um is not None and isinstance(sec.preload, SpringPreload) and sec.arrangement in ("single", "DT"):
         bad.append((("held", "z_um"), "every row floats on the spring preload, so the set carries exactly the spring "
                                       "force axially wherever the inner ring sits: z cannot be held"))
