@@ -101,13 +101,13 @@ def model_study() -> None:
     print(f"\nModel options at 20000 rpm, load {LOAD.tolist()}")
     print(f"  {'variant':52s} {'thrust 1':>8s} {'thrust 2':>8s} {'a_o max':>8s} {'K_xx':>7s} {'K_zz':>7s} "
           f"{'L10r':>9s}")
-    variants = [("outer_race_control", None), ("full", None),
+    variants = [("outer_race_control", None), ("inner_race_control", None), ("full", None),
                 ("outer_race_control, friction couple reversed (*)", -1.0),
                 ("outer_race_control, no gyroscopic moment (*)", 0.0)]
     for label, factor in variants:
         b = build(section(model=label.split(",")[0]))
         if factor is not None:
-            b._p[kn.LAM_O] *= factor
+            b._p[kn.COUPLE] = factor
         st = b.state(LOAD, 20000 * RPM)
         print(f"  {label:52s} {st.row_axial_load_N[0]:8.1f} {st.row_axial_load_N[1]:8.1f} "
               f"{st.contact_angle_outer_deg.max():8.2f} {st.stiffness[0, 0] / 1e6:7.1f} {st.stiffness[2, 2] / 1e6:7.1f} "

@@ -462,14 +462,46 @@ def _bearing(f):
     g = f["bearing"]
     a = g.attrs
     lines = [str(a.get("operating_point", ""))]
+    d = g["displacement"][()]
+    held = set(str(a.get("held_dofs", "")).split(", ")) - {""}
+    dofs, loads = ("x", "y", "z", "theta_x", "theta_y"), ("Fx", "Fy", "Fz", "Mx", "My")
+    shown = [v * s if abs(v * s) >= 5e-5 else 0.0 for v, s in zip(d, (1e6,) * 3 + (1e3,) * 2)]  # round-off: 0
+    lines.append("  displacement " + ", ".join(f"{n} {v:.4g} {'um' if k < 3 else 'mrad'}" + (" (held)" if n in held
+                                               else "") for k, (n, v) in enumerate(zip(dofs, shown))))
+    data = {"displacement": d.tolist()}
+    if held:
+        H = g["holding_load"][()]
+        H = np.where(np.abs(H) > 1e-9 * max(1.0, float(np.max(np.abs(H)))), H, 0.0)
+        lines.append("  holding load " + ", ".join(f"{m} {H[k]:.4g} {'N' if k < 3 else 'N m'}"
+                                                   for k, (n, m) in enumerate(zip(dofs, loads)) if n in held)
+                     + " (what holds the held DOFs; the bearing carries the load plus this)")
+        data["holding_load"] = H.tolist()
     K = g["stiffness"][()]
     lines += _stiffness_lines(K)
-    Q = g["element_load_N"][()]
-    p = g["max_pressure_Pa"][()]
-    lines.append(f"  largest ball load {Q.max():.4g} N, contact pressure {p.max() * 1e-9:.3g} GPa; "
-                 f"contact angles {g['contact_angle_inner_deg'][()].min():.1f}-{g['contact_angle_inner_deg'][()].max():.1f} deg (inner)")
-    data = {"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Q.max()),
-            "max_pressure_Pa": float(p.max())}
+    Qi, Qo, p = g["element_load_inner_N"][()], g["element_load_N"][()], g["max_pressure_Pa"][()]
+    ai, ao = g["contact_angle_inner_deg"][()], g["contact_angle_outer_deg"][()]
+    lines.append(f"  largest contact loads {Qi.max():.4g} N inner, {Qo.max():.4g} N outer; contact pressure "
+                 f"{p.max() * 1e-9:.3g} GPa; contact angles {ai.min():.1f}-{ai.max():.1f} deg inner, "
+                 f"{ao.min():.1f}-{ao.max():.1f} deg outer")
+    data.update({"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Qo.max()),
+                 "max_element_load_inner_N": float(Qi.max()), "max_pressure_Pa": float(p.max())})
+    c, used, model = g["race_control_criterion"][()], g["race_control_used"][()], str(a.get("model", ""))
+    count = {"outer": int(np.sum(c == 1)), "inner": int(np.sum(c == -1)), "either": int(np.sum(c == 0))}
+    if model == "auto":
+        model = f"per ball: outer at {int(np.sum(used == 1))}, inner at {int(np.sum(used == -1))}, shared at " \
+                f"{int(np.sum(used == 0))}"
+    lines.append(f"  race control {model}{' (model auto)' if a.get('model_setting') == 'auto' else ''}; Jones' "
+                 f"criterion: outer race at {count['outer']}, inner race at {count['inner']}, either at "
+                 f"{count['either']} of {c.size} balls")
+    n_cut, ei, eo = int(a["truncated_contacts"]), g["edge_angle_inner_deg"][()], g["edge_angle_outer_deg"][()]
+    lines.append(f"  contact ellipses reach {ei.max():.3g} deg inner, {eo.max():.3g} deg outer; shoulders at "
+                 f"{float(a['shoulder_angle_inner_deg']):.3g} / {float(a['shoulder_angle_outer_deg']):.3g} deg"
+                 + (f": TRUNCATED at {n_cut} contact(s)" if n_cut else ""))
+    data.update(race_control_criterion=count, truncated_contacts=n_cut)
+    warnings = str(a["truncation_warning"]).split(" | ") if "truncation_warning" in a else []
+    lines += [f"  WARNING: {m}" for m in warnings + ([str(a["tilt_warning"])] if "tilt_warning" in a else [])]
+    if "tilt_warning" in a:
+        data["tilt_held_displacement"] = g["tilt_held/displacement"][()].tolist()
     if "operating_clearance_m" in g:
         c, dc = float(g["operating_clearance_m"][()]), float(g["clearance_change_m"][()])
         line = f"  at temperature: operating clearance {c * 1e6:.4g} um ({dc * 1e6:+.4g} um from growth)"

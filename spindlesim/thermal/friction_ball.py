@@ -128,11 +128,14 @@ def ball_kinematics(state, geometry, model: str = "outer_race_control") -> BallK
     rhs[..., 1] = w * (Rc - h * ci)
     if model == "outer_race_control":
         A[..., 2, :] = np.stack([np.zeros(n), so, co], axis=-1)
+    elif model == "inner_race_control":  # no spin at the inner contact: (w_z - w) sin a_i + w_r cos a_i = 0
+        A[..., 2, :] = np.stack([np.zeros(n), si, ci], axis=-1)
+        rhs[..., 2] = w * si
     elif model == "full":
         beta = 0.5 * (ai + ao)
         A[..., 2, :] = np.stack([-np.sin(beta), np.sin(beta), np.cos(beta)], axis=-1)
     else:
-        raise ValueError(f"model must be outer_race_control or full, not {model!r}")
+        raise ValueError(f"model must be outer_race_control, inner_race_control or full, not {model!r}")
     x = np.linalg.solve(A, rhs[..., None])[..., 0]
     wc, wz, wr = x[..., 0], x[..., 1], x[..., 2]
     spin_o = wz * so + wr * co

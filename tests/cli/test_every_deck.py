@@ -91,6 +91,7 @@ EXAMPLES = {
     "validation/spindle_runup.yaml": ROTOR + ["transient"],
     "seed000_roller_bearing.yaml": ["transient"],
     "dtrb_wheel_hub.yaml": ["dtrb"],
+    "ball_single_row.yaml": ["bearing"],
     "contact_roller.yaml": ["contact"],
 }
 EMBEDDED = {"bearing": "bearing", "dtrb": "dtrb", "contact": "contact", "transient": "transient",

@@ -45,6 +45,9 @@ CASES = [
     (dict(), [4e-6, -3e-6, 2e-6, 1.5e-5, -2e-5], 0.0),
     (dict(), [4e-6, -3e-6, 2e-6, 1.5e-5, -2e-5], 15000.0),
     (dict(model="full"), [4e-6, -3e-6, 2e-6, 1.5e-5, -2e-5], 15000.0),
+    (dict(model="inner_race_control"), [4e-6, -3e-6, 2e-6, 1.5e-5, -2e-5], 15000.0),
+    (dict(model="inner_race_control", preload={"kind": "spring", "axial_N": 800.0}), [3e-6, 2e-6, -1e-6, -1e-5, 1e-5],
+     12000.0),
     (dict(preload={"kind": "spring", "axial_N": 800.0}), [3e-6, 2e-6, -1e-6, -1e-5, 1e-5], 0.0),
     (dict(preload={"kind": "spring", "axial_N": 800.0}), [3e-6, 2e-6, -1e-6, -1e-5, 1e-5], 12000.0),
     (dict(arrangement="DF"), [2e-6, 1e-6, 3e-6, 1e-5, 1e-5], 8000.0),
@@ -107,6 +110,7 @@ def test_frequencies_are_the_kinematic_ones():
 
 
 @pytest.mark.parametrize("changes, rpm", [(dict(), 0.0), (dict(), 18000.0), (dict(model="full"), 18000.0),
+                                          (dict(model="inner_race_control"), 18000.0),
                                           (dict(preload={"kind": "spring", "axial_N": 300.0}), 10000.0)])
 def test_set_and_ball_balances(changes, rpm):
     b = bearing(**changes)
@@ -117,7 +121,7 @@ def test_set_and_ball_balances(changes, rpm):
     D = b.geometry.ball_diameter_m
     ai, ao = np.radians(st.contact_angle_inner_deg), np.radians(st.contact_angle_outer_deg)
     Qi, Qo, Fc, Mg = st.element_load_inner_N, st.element_load_outer_N, st.centrifugal_force_N, st.gyroscopic_moment_Nm
-    li, lo = (0.0, 2.0) if b.model == "outer_race_control" else (1.0, 1.0)
+    li, lo = {"outer_race_control": (0.0, 2.0), "inner_race_control": (2.0, 0.0), "full": (1.0, 1.0)}[b.model]
     ci, co = li * Mg / D, -lo * Mg / D
     Ra = Qi * np.sin(ai) - Qo * np.sin(ao) + ci * np.cos(ai) + co * np.cos(ao)
     Rr = Qi * np.cos(ai) - Qo * np.cos(ao) + Fc - ci * np.sin(ai) - co * np.sin(ao)

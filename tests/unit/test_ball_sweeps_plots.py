@@ -35,8 +35,8 @@ def test_run_of_a_section_and_its_figures():
     assert ld.name == "fz_N" and ld.row_axial_load_N[0, 1] > ld.row_axial_load_N[0, 0]
     assert r.state.speed_rpm == pytest.approx(12000.0)
     figs = plots.figures(r)
-    assert set(figs) == {"ball_load_distribution", "ball_stiffness_vs_preload", "ball_stiffness_vs_speed",
-                         "ball_contact_angles_vs_speed"}
+    assert set(figs) == {"ball_load_distribution", "ball_contact_ellipses", "ball_stiffness_vs_preload",
+                         "ball_stiffness_vs_speed", "ball_contact_angles_vs_speed"}
     for name, fig in figs.items():
         assert isinstance(fig, Figure)
         title = fig._suptitle.get_text()

@@ -41,6 +41,7 @@ CASES = {
     "compare_frozen_rpm": lambda: _without(_embedded("spindle_linear"), {"campbell"}) + _example("## Campbell diagram"),
     "ball entries": lambda: _without(_embedded("milling_spindle"), {"bearings"}) + _example("## Ball bearing entries"),
     "bearing section": lambda: "title: ball\n" + _example("## Ball bearing section"),
+    "bearing section held": lambda: "title: ball\n" + _example("## Ball bearing section", 1),
     "roller entries": lambda: (_without(_embedded("spindle_linear"), {"bearings"})
                                + _example("## Cylindrical roller bearing entries")),
     "chatter milling": lambda: _without(_embedded("milling_spindle"), {"chatter"}) + _example("## Chatter (", 0),

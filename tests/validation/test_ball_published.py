@@ -70,8 +70,7 @@ def bearing_218(reversed_couple: bool = False) -> BallBearing:
                       inner_conformity=F218, outer_conformity=F218, ring=STEEL)
     b = BallBearing(g, Preload("spring", axial_N=FA218))
     if reversed_couple:  # the |w_R| reading of the printed equations
-        b._p[kn.LAM_I] *= -1.0
-        b._p[kn.LAM_O] *= -1.0
+        b._p[kn.COUPLE] = -1.0
     return b
 
 
@@ -158,7 +157,7 @@ REG_218 = {
 def test_218_regression_of_the_three_readings(reading):
     b = bearing_218(reversed_couple=reading == "reversed")
     if reading == "none":
-        b._p[kn.LAM_O] = 0.0
+        b._p[kn.COUPLE] = 0.0
     for rpm, (ai, ao, Qi, Qo) in REG_218[reading].items():
         mai, mao, mQi, mQo, _, _ = model_218(b, rpm)
         assert (math.degrees(mai), math.degrees(mao)) == pytest.approx((ai, ao), abs=6e-4)

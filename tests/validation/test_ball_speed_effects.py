@@ -8,9 +8,10 @@ the outer groove centre, axial and radial), delta_i, delta_o, with
     Q_i sin a_i - Q_o sin a_o + (M_g / D)(l_i cos a_i - l_o cos a_o) = 0
     Q_i cos a_i - Q_o cos a_o - (M_g / D)(l_i sin a_i - l_o sin a_o) + F_c = 0
 
-(l_i, l_o) = (0, 2) for outer-race control, (1, 1) for the full model; F_c = m (d_m/2) w_c^2,
-M_g = J w_R w_c sin(beta); beta from tan(beta) = sin a_o / (cos a_o + D/d_m) (outer-race control)
-or beta = (a_i + a_o)/2 (full); w_c and w_R from pure rolling at both contacts in Harris' form
+(l_i, l_o) = (0, 2) for outer-race control, (2, 0) for inner-race control, (1, 1) for the full model;
+F_c = m (d_m/2) w_c^2, M_g = J w_R w_c sin(beta); beta from tan(beta) = sin a_o / (cos a_o + D/d_m)
+(outer-race control), tan(beta) = sin a_i / (cos a_i - D/d_m) (inner-race control) or
+beta = (a_i + a_o)/2 (full); w_c and w_R from pure rolling at both contacts in Harris' form
 (see ``kinematics`` below).  The friction couple acts in the sense of T = w_c e_z x H (the torque the
 races must apply so that the ball's spin axis precesses with the cage; checked in 3D below).  Here M_g
 is the size J |w_R| w_c sin(beta); Harris and Kotzalas print the two friction terms with the opposite
@@ -41,9 +42,25 @@ J = MASS * D * D / 10.0
 G = D / DM
 
 
+#: (l_i, l_o) of Harris and Kotzalas' ball balance for each race control
+LAMBDAS = {"outer": (0.0, 2.0), "full": (1.0, 1.0), "inner": (2.0, 0.0)}
+
+
+def _race(full) -> str:
+    """The race control of a ``full`` argument: True / False (full / outer) or a name of LAMBDAS."""
+    return full if isinstance(full, str) else ("full" if full else "outer")
+
+
 def kinematics(ai, ao, w, full):
-    """(F_c, M_g, w_c, w_R, beta) of Harris and Kotzalas (2007, ch. 3), outer ring fixed."""
-    beta = 0.5 * (ai + ao) if full else math.atan2(math.sin(ao), math.cos(ao) + G)
+    """(F_c, M_g, w_c, w_R, beta) of Harris and Kotzalas (2007, ch. 3), outer ring fixed; ``full``: True,
+    False (outer-race control) or "outer", "inner", "full"."""
+    race = _race(full)
+    if race == "full":
+        beta = 0.5 * (ai + ao)
+    elif race == "inner":
+        beta = math.atan2(math.sin(ai), math.cos(ai) - G)
+    else:
+        beta = math.atan2(math.sin(ao), math.cos(ao) + G)
     tb = math.tan(beta)
     po = (math.cos(ao) + tb * math.sin(ao)) / (1.0 + G * math.cos(ao))
     pi_ = (math.cos(ai) + tb * math.sin(ai)) / (1.0 - G * math.cos(ai))
@@ -56,8 +73,8 @@ def kinematics(ai, ao, w, full):
 
 def hand_ball(w, full, A1=None, thrust=None, start=None):
     """One ball: (a_i, a_o, Q_i, Q_o, F_c, M_g[, A1]) at shaft speed w; A1 given (position) or solved
-    for the inner-ring thrust per ball (spring)."""
-    li, lo = (1.0, 1.0) if full else (0.0, 2.0)
+    for the inner-ring thrust per ball (spring); ``full`` as for ``kinematics``."""
+    li, lo = LAMBDAS[_race(full)]
     A2 = BD * math.cos(A0)
 
     def parts(x):

@@ -7,12 +7,18 @@ friction couple shared between the races); Hertz point contacts with exact ellip
 (:mod:`spindlesim.contact.hertz`); the set reaction for a 5-DOF inner-ring displacement and its
 exact 5x5 tangent; ISO 281 and ISO/TS 16281 lives.
 
-- ``section``: deck keys (:class:`BallBearingEntry`, :class:`BallSection`) and :func:`build`.
+- ``section``, ``section_thermal``: deck keys (:class:`BallBearingEntry`, :class:`BallSection`, the keys of
+  the bearing at temperature) and :func:`build`.
 - ``geometry``: :class:`BallGeometry` (rows, grooves, Hertz constants) and :func:`ball_geometry`.
-- ``kernel``: compiled ball equilibria (Newton, fallback, closed form at rest), row reactions, tangents.
-- ``bearing``: :class:`BallBearing` (the bearing contract, equilibrium, states).
+- ``kernel``: compiled ball equilibria (Newton, fallback, closed form at rest; outer-, inner-race control
+  or the shared couple), row reactions, tangents.
+- ``bearing``: :class:`BallBearing` (the bearing contract, states); ``equilibrium``: the set equilibrium
+  with DOFs free under the load or held at a displacement (:class:`Held`).
+- ``kinematics``, ``checks``: the balls' rolling kinematics (spin, roll), Jones' race-control criterion
+  and the truncation of the contact ellipses at the shoulders.
 - ``rating``: ISO 281 load rating and life, ISO/TS 16281 reference rating life.
-- ``results``, ``sweeps``, ``plots``: records, sweeps over preload, load and speed, figures.
+- ``results``, ``sweeps``, ``plots``: records, sweeps over preload, load and speed (and the run's
+  checks), figures.
 - docs/theory.md, "Ball bearings": the equations, sign conventions and choices, with sources.
 
 The embedded default deck of ``spindlesim bearing`` (a 7014C-size DB pair) is

@@ -30,6 +30,10 @@ Preload (one choice for the whole set):
   along ``floating_thrust`` (+1: +z, -1: -z); every row of a single bearing or tandem set.
 - ``none``: rings at first contact (q = 0), clearance as given.
 
+Equilibrium under a load (:mod:`.equilibrium`): every DOF free, or some held at a prescribed displacement
+(``Held``; the state then reports the holding load).  Race control (``model``): outer_race_control,
+inner_race_control or full (:mod:`.kernel`).
+
 Ball positions: psi_j = phi + 2 pi j / Z in every row (rows aligned), phi = cage angle =
 (1 - gamma)/2 times the shaft angle (kinematic cage ratio at alpha_f).  ``linearized`` averages
 the tangent over ``pitch_samples`` cage positions within one ball pitch, each at its own
@@ -45,20 +49,22 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..base import FIVE, BearingBase, shaft_angle
+from . import checks
+from . import equilibrium as eq
 from . import kernel as kn
+from .equilibrium import FREE, BallEquilibriumError, Held
 from .geometry import BallGeometry
+from .kinematics import RACE_CODES, ball_motion
 from .rating import RatingInputs, lives
 from .results import BallState
 
 log = logging.getLogger(__name__)
 
-MODELS = ("outer_race_control", "full")
+MODELS = ("outer_race_control", "inner_race_control", "full")
 #: traction coefficient above which the state warns that the gyroscopic couple exceeds friction
 TRACTION_WARN = 0.1
 
-
-class BallEquilibriumError(ArithmeticError):
-    """A ball, floating ring or set equilibrium did not converge."""
+__all__ = ["BallBearing", "BallEquilibriumError", "Held", "MODELS", "Preload"]
 
 
 @dataclass(frozen=True)
@@ -131,9 +137,12 @@ class BallBearing(BearingBase):
 
     def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
                  model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4,
-                 speed_growth=None, growth=None, made=None):
+                 speed_growth=None, growth=None, shoulders: checks.Shoulders | None = None, race=None,
+                 made=None):
         if model not in MODELS:
             raise ValueError(f"model must be one of {MODELS}, not {model!r}")
+        if race is not None and np.shape(race) != (geometry.rows, geometry.balls):
+            raise ValueError(f"race needs one code per ball, shape {(geometry.rows, geometry.balls)}")
         if preload.kind not in ("none", "position", "spring"):
             raise ValueError(f"unknown preload kind {preload.kind!r}")
         s = geometry.row_sign
@@ -149,7 +158,12 @@ class BallBearing(BearingBase):
         self.preload = preload
         self.name = str(name)
         self.node = int(node)
-        self.model = model
+        #: race control of every ball (RACE_CODES): the model's, or per ball (``race``, e.g. chosen by Jones'
+        #: criterion: then ``model`` reads "auto" unless every ball has the same)
+        self._race_given = None if race is None else np.array(race, dtype=np.int8)
+        self.race = np.full((geometry.rows, geometry.balls), RACE_CODES[model], np.int8) if race is None \
+            else self._race_given.copy()
+        self.model = model if race is None else _race_label(self.race)
         self.rating = rating
         self.pitch_samples = int(pitch_samples)
         #: callable speed [rad/s] -> radial growth of the inner groove centre beyond rest [m] (None: rings rigid
@@ -158,6 +172,8 @@ class BallBearing(BearingBase):
         self.growth = growth
         #: how the bearing was made (the cold assembly: .thermal.MadeAs), the start of at_temperatures
         self.made = made if made is not None else _made_as(geometry, preload)
+        #: thrust-side shoulders of the rings (truncation check); None: the typical ratio (checks.shoulders_of)
+        self.shoulders = checks.shoulders_of(geometry) if shoulders is None else shoulders
         self._grown_p: tuple[float, np.ndarray] | None = None
         g = geometry
         D, dm = g.ball_diameter_m, g.pitch_diameter_m
@@ -170,8 +186,11 @@ class BallBearing(BearingBase):
         p[kn.J_BALL] = g.ball_inertia_kg_m2
         p[kn.D_BALL] = D
         p[kn.R_I_GROOVE] = g.inner_groove_radius_m
-        p[kn.LAM_I], p[kn.LAM_O] = (0.0, 2.0) if model == "outer_race_control" else (1.0, 1.0)
-        p[kn.FULL] = 0.0 if model == "outer_race_control" else 1.0
+        # the race control of a uniform model (kernel.evaluate_rows sets these per ball from self.race)
+        p[kn.RACE], p[kn.LAM_I], p[kn.LAM_O] = {"outer_race_control": (kn.RACE_OUTER, 0.0, 2.0),
+                                                "inner_race_control": (kn.RACE_INNER, 2.0, 0.0),
+                                                "full": (kn.RACE_FULL, 1.0, 1.0)}[model]
+        p[kn.COUPLE] = 1.0
         p[kn.A_AX0], p[kn.A_RAD0] = g.reference_axial_m, g.reference_radial_m
         p[kn.R_I_CENTRE] = g.inner_centre_radius_m
         p[kn.A_0] = g.groove_distance_m
@@ -203,12 +222,16 @@ class BallBearing(BearingBase):
         return self._copy(preload=pre)
 
     def with_model(self, model: str) -> "BallBearing":
-        return self._copy(model=model)
+        return self._copy(model=model, race=None)
+
+    def with_race(self, codes) -> "BallBearing":
+        """Same bearing with a race control per ball (RACE_CODES, shape (rows, balls))."""
+        return self._copy(race=codes)
 
     def _copy(self, **kw) -> "BallBearing":
-        args = dict(preload=self.preload, name=self.name, node=self.node, model=self.model, rating=self.rating,
-                    pitch_samples=self.pitch_samples, speed_growth=self.speed_growth, growth=self.growth,
-                    made=self.made)
+        args = dict(preload=self.preload, name=self.name, node=self.node, model=self._base_model(),
+                    rating=self.rating, pitch_samples=self.pitch_samples, speed_growth=self.speed_growth,
+                    growth=self.growth, shoulders=self.shoulders, race=self._race_given, made=self.made)
         args.update(kw)
         geometry = args.pop("geometry", self.geometry)
         return BallBearing(geometry, **args)
@@ -225,6 +248,9 @@ class BallBearing(BearingBase):
         from . import thermal
 
         return thermal.heat(self, speed, static_load, lubrication, lubricant_C, displacement)
+
+    def _base_model(self) -> str:
+        return self.model if self.model in MODELS else "outer_race_control"
 
     # ---- kinematics -------------------------------------------------------------------------
     def cage_angle(self, shaft_angle_rad: float) -> float:
@@ -253,15 +279,25 @@ class BallBearing(BearingBase):
         X = np.ascontiguousarray(self._X[idx])
         f_rows, K_rows = np.empty((n, 5)), np.empty((n, 5, 5))
         out = [np.empty((n, Z)) for _ in range(7)]
-        status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
-                                  self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
-                                  np.ascontiguousarray(w[idx], dtype=float), Z, X, f_rows, K_rows, *out)
+        try:
+            status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
+                                      self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
+                                      np.ascontiguousarray(w[idx], dtype=float),
+                                      np.ascontiguousarray(self.race[idx], dtype=np.float64), Z, X, f_rows, K_rows,
+                                      *out)
+        except ZeroDivisionError:  # a degenerate ball (e.g. opposite contact normals): the rings pass a ball
+            self._X[:] = np.nan
+            raise BallEquilibriumError(
+                f"bearing {self.name!r}: the inner ring at q = {np.round(np.asarray(q) * 1e6, 4).tolist()} (um, urad) "
+                f"moves its groove centre past the outer one at a ball (their distance as made: "
+                f"{g.groove_distance_m * 1e6:.4g} um): no ball fits there") from None
         if status >= 0:
             k, j = idx[status // Z], status % Z
             psi = phi + 2.0 * math.pi * j / Z
             self._X[:] = np.nan
             raise BallEquilibriumError(
-                f"bearing {self.name!r}: equilibrium of ball {j} of row {k} (psi {math.degrees(psi) % 360:.1f} deg) "
+                f"bearing {self.name!r}: equilibrium of ball {j + 1} of row {k + 1} "
+                f"(psi {math.degrees(psi) % 360:.1f} deg) "
                 f"did not converge (damped Newton on the ball centre, {kn.MAX_NEWTON} iterations) at "
                 f"{om * 30 / math.pi:.6g} rpm, inner ring at q = {np.round(np.asarray(q) * 1e6, 4).tolist()} "
                 f"(um, urad), model {self.model}")
@@ -374,78 +410,19 @@ class BallBearing(BearingBase):
         return out
 
     # ---- equilibrium and results ---------------------------------------------------------------
-    def _reference_stiffness(self) -> np.ndarray:
-        """Diagonal scale of the Levenberg-Marquardt damping of the set Newton: every ball at 1 um
-        approach, the same for every DOF once tilts are measured at the groove-centre radius (a
-        clearance or an unloaded row then gives steps along the residual, not along one DOF)."""
-        g = self.geometry
-        k1 = 1.5 * g.K_series * math.sqrt(1e-6) * g.balls * g.rows * 0.5
-        R = g.inner_centre_radius_m
-        return k1 * np.array([1.0, 1.0, 1.0, R * R, R * R])
-
-    def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100):
-        """(q, evaluation, iterations) with reaction(q) + load = 0 (damped Newton on 5 DOFs)."""
-        g = self.geometry
-        L = np.asarray(load, float)
-        R = g.inner_centre_radius_m
-        wgt = np.array([1.0, 1.0, 1.0, 1.0 / R, 1.0 / R])
-        pre = self.preload.axial_N if self.preload.kind == "spring" else 0.0
-        f_scale = max(1.0, float(np.max(np.abs(L * wgt))), pre)
-        tol = 1e-10 * f_scale
-        dofs = np.array([0, 1, 3, 4]) if self.fully_floating else np.arange(5)
-        if self.fully_floating:
-            thrust = self._s_float * self.preload.axial_N
-            if abs(L[2] - thrust) > 1e-9 * max(abs(thrust), abs(L[2])):
-                raise ValueError(
-                    f"bearing {self.name!r}: every row floats on the spring, so it carries exactly the spring "
-                    f"force axially; the axial load must be fz = {thrust:g} N, not {L[2]:g} N")
-        q = np.zeros(5) if q0 is None else np.array(q0, float)
-        ref = self._reference_stiffness()
-        lam = 1e-4
-        ev = self._evaluate(q, speed, phi)
-        # the reaction's noise follows the rows' own forces, not only the external load: a position
-        # preload holds hundreds of N between rows that cancel in the set reaction, and each ball's
-        # own equilibrium is solved to about 1e-11 of them (seed 001's pair under a 0.25 N load at
-        # 6000 rpm: the same q gave -1.4e-9 and -3.4e-9 N, with 461 N in a row)
-        tol = max(tol, 1e-11 * float(np.max(np.abs(ev.rows.f_rows * wgt))))
-        r = ev.f + L
-        merit = float(np.linalg.norm((r * wgt)[dofs]))  # acceptance: weighted 2-norm (descent of LM)
-        worst = float(np.max(np.abs((r * wgt)[dofs])))  # convergence: every component
-        for it in range(1, max_iter + 1):
-            if worst <= tol:
-                return q, ev, it - 1
-            A = ev.K[np.ix_(dofs, dofs)] + lam * np.diag(ref[dofs])
-            step = np.zeros(5)
-            step[dofs] = np.linalg.solve(A, r[dofs])
-            big = float(np.max(np.abs(step / wgt))) / 20e-6
-            if big > 1.0:
-                step /= big
-            trial = q + step
-            evt = self._evaluate(trial, speed, phi)
-            rt = evt.f + L
-            mt = float(np.linalg.norm((rt * wgt)[dofs]))
-            # equal merit is accepted: inside a clearance the reaction does not change
-            if mt <= merit:
-                q, ev, r, merit = trial, evt, rt, mt
-                worst = float(np.max(np.abs((r * wgt)[dofs])))
-                lam = max(lam * 0.01, 1e-14)
-            else:
-                lam *= 10.0
-                if lam > 1e10:
-                    break
-        raise BallEquilibriumError(
-            f"bearing {self.name!r}: no set equilibrium under the load {np.round(L, 6).tolist()} (N, N m) at "
-            f"{speed * 30 / math.pi:.6g} rpm, cage angle {math.degrees(phi):.3g} deg ({self.preload.label()}): "
-            f"damped Newton on (x, y, z, theta_x, theta_y), {max_iter} iterations, residual {worst:.3g} N")
+    def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE):
+        """(q, evaluation, iterations) with reaction(q) + load = 0 on the free DOFs (:mod:`.equilibrium`)."""
+        return eq.solve(self, load, speed, phi, q0, max_iter, held)
 
     def equilibrium(self, load, speed: float = 0.0, cage_angle: float = 0.0) -> np.ndarray:
         """Inner-ring displacement q (5) carrying ``load`` (what the shaft puts on the bearing)."""
         return self._equilibrium(load, float(speed), float(cage_angle))[0].copy()
 
-    def state(self, load, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
-        """Equilibrium under ``load`` (Fx, Fy, Fz [N], Mx, My [N m]) at ``speed`` [rad/s], with results."""
-        q, ev, its = self._equilibrium(load, float(speed), float(cage_angle))
-        return self._state(q, ev, float(speed), float(cage_angle), its, load)
+    def state(self, load, speed: float = 0.0, cage_angle: float = 0.0, held: Held = FREE, q0=None) -> BallState:
+        """Equilibrium under ``load`` (Fx, Fy, Fz [N], Mx, My [N m]) at ``speed`` [rad/s], with results;
+        ``held``: DOFs held at prescribed displacements (their load components must be 0); ``q0``: a start."""
+        q, ev, its = self._equilibrium(load, float(speed), float(cage_angle), q0, held=held)
+        return self._state(q, ev, float(speed), float(cage_angle), its, load, held)
 
     def state_at(self, q, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
         """Results at a given inner-ring displacement q (5)."""
@@ -453,49 +430,80 @@ class BallBearing(BearingBase):
         return self._state(qq, self._evaluate(qq, float(speed), float(cage_angle)), float(speed),
                            float(cage_angle), 0)
 
-    def _state(self, q, ev: _SetEval, speed: float, phi: float, iterations: int, load=None) -> BallState:
-        """Results; ``load`` (the load the equilibrium carries) feeds ISO 281, default -reaction."""
+    def _state(self, q, ev: _SetEval, speed: float, phi: float, iterations: int, load=None,
+               held: Held = FREE) -> BallState:
+        """Results; ``load`` (the load the equilibrium carries on its free DOFs) plus the holding load at
+        the held DOFs feeds ISO 281; default -reaction."""
         g = self.geometry
         r = ev.rows
         c_i, c_o = np.cbrt(np.maximum(r.Qi, 0.0)), np.cbrt(np.maximum(r.Qo, 0.0))
         row_axial = -g.row_sign * r.f_rows[:, 2]
-        load = -ev.f if load is None else np.asarray(load, float)
+        if load is None:
+            load, hold = -ev.f, np.zeros(5)
+        else:
+            hold = eq.holding_load(ev.f, load, held)
+            load = np.asarray(load, float) + hold
         lf = lives(g, self.rating, r.Qi, r.Qo, math.hypot(load[0], load[1]), load[2])
         traction = self._traction(r)
         if np.nanmax(traction, initial=0.0) > TRACTION_WARN:
             k, j = np.unravel_index(int(np.nanargmax(traction)), traction.shape)
             log.warning("bearing %r at %.6g rpm: the gyroscopic couple of ball %d of row %d needs a traction "
                         "coefficient of %.3g; above about %.2g the ball would pivot (gyroscopic slip), which this "
-                        "quasi-static model does not represent", self.name, speed * 30 / math.pi, j, k,
+                        "quasi-static model does not represent", self.name, speed * 30 / math.pi, j + 1, k + 1,
                         traction[k, j], TRACTION_WARN)
         if g.contact_angle_rad > 0.0 and np.any((r.ai < 0.0) & (r.Qi > 0.0)):
             log.warning("bearing %r: loaded balls with a negative contact angle: an angular-contact ring would "
                         "run on its low shoulder (the groove is modelled as a full torus)", self.name)
+        semi_i = np.stack([g.inner.a1 * c_i, g.inner.b1 * c_i], axis=-1)
+        semi_o = np.stack([g.outer.a1 * c_o, g.outer.b1 * c_o], axis=-1)
+        ai_deg, ao_deg = np.degrees(r.ai), np.degrees(r.ao)
+        Msi, Mso = checks.spin_moments(g, r.Qi, r.Qo, semi_i, semi_o)
+        motion = ball_motion(r.ai, r.ao, speed, g.pitch_diameter_m, g.ball_diameter_m, self.race)
+        sym = g.contact_angle_rad == 0.0
+        sh = self.shoulders
+        edge_i = checks.edge_angles_deg(ai_deg, semi_i[..., 0], g.inner_groove_radius_m, sym)
+        edge_o = checks.edge_angles_deg(ao_deg, semi_o[..., 0], g.outer_groove_radius_m, sym)
         return BallState(
-            displacement=np.array(q, float), reaction=ev.f.copy(), load=load.copy(), stiffness=ev.K.copy(),
-            speed_rad_s=speed,
+            displacement=np.array(q, float), reaction=ev.f.copy(), load=load.copy(), holding_load=hold,
+            held=tuple(bool(m) for m in held.mask), stiffness=ev.K.copy(), speed_rad_s=speed, model=self.model,
+            race_used=self.race.copy(),
             cage_angle_rad=phi, psi_rad=r.psi.copy(), row_z_m=g.row_z_m.copy(), row_sign=g.row_sign.copy(),
             element_load_inner_N=r.Qi.copy(), element_load_outer_N=r.Qo.copy(),
-            contact_angle_inner_deg=np.degrees(r.ai), contact_angle_outer_deg=np.degrees(r.ao),
+            contact_angle_inner_deg=ai_deg, contact_angle_outer_deg=ao_deg,
             max_pressure_inner_Pa=g.inner.p1 * c_i, max_pressure_outer_Pa=g.outer.p1 * c_o,
-            semi_axes_inner_m=np.stack([g.inner.a1 * c_i, g.inner.b1 * c_i], axis=-1),
-            semi_axes_outer_m=np.stack([g.outer.a1 * c_o, g.outer.b1 * c_o], axis=-1),
+            semi_axes_inner_m=semi_i, semi_axes_outer_m=semi_o,
             centrifugal_force_N=r.Fc.copy(), gyroscopic_moment_Nm=r.Mg.copy(), traction_ratio=traction,
+            spin_moment_inner_Nm=Msi, spin_moment_outer_Nm=Mso,
+            race_control=checks.race_control_criterion(Msi, Mso, ai_deg, ao_deg),
+            spin_roll_inner=motion.spin_roll_inner, spin_roll_outer=motion.spin_roll_outer,
+            edge_angle_inner_deg=edge_i, edge_angle_outer_deg=edge_o,
+            shoulder_angle_inner_deg=math.degrees(sh.inner_angle_rad),
+            shoulder_angle_outer_deg=math.degrees(sh.outer_angle_rad),
+            truncated_inner=checks.truncated(edge_i, sh.inner_angle_rad, r.Qi, sym),
+            truncated_outer=checks.truncated(edge_o, sh.outer_angle_rad, r.Qo, sym),
             row_axial_load_N=row_axial,
             floating_ring_axial_m=float(ev.shift), lives=lf, iterations=int(iterations),
         )
 
-
     def _traction(self, r: _RowEval) -> np.ndarray:
         """Friction force over normal load at the contacts that carry the gyroscopic couple (the larger
-        of the two in the full model); inf where that contact is unloaded but a couple is needed."""
+        of the two when both do); inf where that contact is unloaded but a couple is needed."""
         D = self.geometry.ball_diameter_m
-        lam_i, lam_o = (0.0, 2.0) if self.model == "outer_race_control" else (1.0, 1.0)
+        lam_i = np.where(self.race > 0, 0.0, np.where(self.race < 0, 2.0, 1.0))
+        lam_o = 2.0 - lam_i
+        out = np.zeros_like(r.Mg)
         with np.errstate(divide="ignore", invalid="ignore"):
-            out = np.where(r.Mg != 0.0, np.abs(lam_o * r.Mg / D) / r.Qo, 0.0)
-            if lam_i:
-                out = np.maximum(out, np.where(r.Mg != 0.0, np.abs(lam_i * r.Mg / D) / r.Qi, 0.0))
+            for lam, Q in ((lam_o, r.Qo), (lam_i, r.Qi)):
+                out = np.maximum(out, np.where((r.Mg != 0.0) & (lam > 0.0), np.abs(lam * r.Mg / D) / Q, 0.0))
         return out
+
+
+def _race_label(race: np.ndarray) -> str:
+    """The model name of per-ball race codes: the common one, or "auto" when the balls differ."""
+    for name, code in RACE_CODES.items():
+        if np.all(race == code):
+            return name
+    return "auto"
 
 
 def _merge(rows: int, ia: np.ndarray, ea: _RowEval, ib: np.ndarray, eb: _RowEval) -> _RowEval:

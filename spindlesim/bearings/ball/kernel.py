@@ -1,46 +1,29 @@
 """Compiled (numba) ball equilibria, and the row reactions on the shaft with their exact tangent.
 
-One ball, meridional plane (a, r) of :mod:`.geometry`.  Unknown: the ball centre X = (X_a, X_r)
-relative to the outer groove centre O_o (Harris and Kotzalas 2007, *Advanced Concepts*, ch. 3:
-"X1, X2"; two unknowns per ball).  With u = X and w = A - X (A = O_i - O_o, set by the inner
-ring), L_o = |u|, L_i = |w|, the contact normals are n_o = u / L_o = (sin a_o, cos a_o) and
-n_i = w / L_i = (sin a_i, cos a_i), the approaches delta_o = L_o - (f_o - 1/2) D and
-delta_i = L_i - (f_i - 1/2) D, and Q = K <delta>^1.5 (Hertz).
+One ball in its meridional plane (a, r) (:mod:`.geometry`; Harris and Kotzalas 2007, *Advanced Concepts*,
+ch. 3); unknown: the ball centre X from the outer groove centre O_o.  With u = X, w = A - X (A = O_i - O_o,
+set by the inner ring): n_o = u/|u| = (sin a_o, cos a_o), n_i = w/|w|, delta_o = |u| - (f_o - 1/2) D,
+delta_i = |w| - (f_i - 1/2) D, Q = K <delta>^1.5 (Hertz), and
 
-Forces on the ball (t = (cos a, -sin a) is the in-plane tangent of a contact):
+    R = Q_i n_i - Q_o n_o + F_c e_r + c_i t_i + c_o t_o = 0,      t = (cos a, -sin a)
 
-    R = Q_i n_i - Q_o n_o + F_c e_r + c_i t_i + c_o t_o = 0
+with F_c = m (d_m / 2) w_c^2 and friction forces c_i = lambda_i M_g / D, c_o = -lambda_o M_g / D carrying
+the gyroscopic couple M_g = J w_R w_c sin(beta) (Jones 1960; M_g a size), (D/2)(c_i - c_o) = M_g.  Race
+control (``p[RACE]``, set per ball by ``evaluate_rows`` from its ``race`` code: 1 outer, -1 inner, 0 full;
+g = D / d_m, per-ball angles, outer ring fixed, w the shaft speed):
 
-- centrifugal force F_c = m (d_m / 2) w_c^2 (Harris and Kotzalas 2007, ch. 3), radial;
-- gyroscopic moment M_g = J w_R w_c sin(beta) (Jones 1960), the torque the contacts must apply
-  so that the spin axis precesses with the cage: T = w_c e_z x (J w_ball) lies along the
-  orbit tangent; in the (a, r) plane the friction couple (D/2)(c_i - c_o) equals +M_g for either
-  row direction (derivation: docs/theory.md, "Ball bearings").
-  M_g here is a size (> 0); Harris and Kotzalas' printed balance has the opposite signs on the
-  friction terms and a signed, negative w_R, which is the same force: do not combine their signs
-  with a positive M_g (tests/validation/test_ball_published.py);
-- raceway control (Jones 1960; Harris and Kotzalas ch. 3): ``outer_race_control`` puts the whole
-  couple on the outer contact (c_i = 0, c_o = -2 M_g / D, lambda_i = 0, lambda_o = 2), the
-  ball axis from no spin at the outer contact, tan(beta) = sin a_o / (cos a_o + gamma), and
-  pure rolling at both contacts then gives w_c / w = (1 - gamma cos a_i) / (1 + cos(a_i - a_o))
-  and w_R = w_c * sqrt(sin^2 a_o + (cos a_o + gamma)^2) / gamma, hence
-  M_g = J (d_m / D) w_c^2 sin a_o;  ``full`` shares it (c_i = M_g / D, c_o = -M_g / D,
-  lambda_i = lambda_o = 1) with no race-control hypothesis: the ball axis is normal to the
-  bisector of the two contact normals, beta = (a_i + a_o) / 2, rolling at both contacts gives
-  w_c / w = (1 - gamma cos a_i) / (2 + gamma (cos a_o - cos a_i)) and
-  w_R = w (1 + g cos a_o)(1 - g cos a_i) / (g cos((a_i - a_o)/2) (2 + g (cos a_o - cos a_i)))
-  (gamma = D / d_m here, per-ball angles; outer ring fixed, w the shaft speed).
+- outer: lambda = (0, 2), no spin at the outer contact; w_c / w = (1 - g cos a_i)/(1 + cos(a_i - a_o)),
+  M_g = (J / g) w_c^2 sin a_o;
+- full (shared): lambda = (1, 1), beta = (a_i + a_o)/2; w_c / w = (1 - g cos a_i)/(2 + g (cos a_o - cos a_i));
+- inner: lambda = (2, 0), no spin at the inner contact, tan(beta) = sin a_i / (cos a_i - g);
+  w_c / w = (cos(a_i - a_o) - g cos a_o)/(1 + cos(a_i - a_o)),
+  M_g = (J / g) w^2 (1 + g cos a_o)(cos(a_i - a_o) - g cos a_o) sin a_i / (1 + cos(a_i - a_o))^2.
 
-The force of the ball on the inner ring is G = -Q_i n_i - c_i t_i at O_i, plus the couple of the
-inner friction force about O_i, -r_i c_i (tangential axis).  Damped Newton on X (``solve_ball``);
-the implicit-function theorem gives dX/dA = -(R_u - R_w)^-1 R_w and so the exact dG/dA.  At zero speed
-the ball is a two-spring series along A (closed form).
-
-Row assembly (``evaluate_rows``): with T the 2x5 map from the node DOFs q to A (rows t_a, t_r) and
-e_m the map of the inner friction couple to (theta_x, theta_y), f += T^T G + e_m m and
-K_t -= T^T (dG/dA) T + e_m (dm/dA) T, dG/dA = G_u dX/dA + G_w (I - dX/dA); at rest
-dG/dA = -(k_n n n^T + Q/|A| t t^T).  (One module on purpose: numba's cache does not see changes
-in functions compiled from another file.)
+Derivations, the sense of the couple and Harris and Kotzalas' sign conventions: docs/theory.md, "Ball
+bearings".  The ball's force on the inner ring, G = -Q_i n_i - c_i t_i at O_i plus the couple -r_i c_i, is
+summed over the rows with its exact tangent through every ball equilibrium (implicit-function theorem); at
+rest the ball is two springs in series along A (closed form).  One module on purpose: numba's cache does not
+see changes in functions compiled from another file.
 """
 
 from __future__ import annotations
@@ -51,9 +34,11 @@ import numpy as np
 from numba import njit
 
 # parameter vector
-G_I, G_O, K_I, K_O, GAMMA, M_HALF_DM, J_BALL, D_BALL, R_I_GROOVE, LAM_I, LAM_O, FULL, \
-    A_AX0, A_RAD0, R_I_CENTRE, K_N, A_0, SPLIT_O, FC_FLOOR = range(19)
-N_PARAMS = 19
+G_I, G_O, K_I, K_O, GAMMA, M_HALF_DM, J_BALL, D_BALL, R_I_GROOVE, LAM_I, LAM_O, RACE, \
+    A_AX0, A_RAD0, R_I_CENTRE, K_N, A_0, SPLIT_O, FC_FLOOR, COUPLE = range(20)
+N_PARAMS = 20  # COUPLE: factor on the couple's friction forces (1; the validation's other readings: -1, 0)
+#: race control codes of p[RACE]
+RACE_OUTER, RACE_FULL, RACE_INNER = 0.0, 1.0, 2.0
 
 # work buffer of _terms
 B_R, B_J, B_RW, B_G, B_GU, B_GW, B_M, B_MU, B_MW, B_QI, B_QO, B_AI, B_AO, B_FC, B_MG, B_DQ, B_REST = \
@@ -62,6 +47,60 @@ N_BUF = 33
 EPS = 2.220446049250313e-16
 
 MAX_NEWTON = 80
+
+
+@njit(cache=True)
+def _speed_terms(si, ci, so, co, ai, ao, om, p):
+    """(F_c, dF_c/da_i, dF_c/da_o, M_g, dM_g/da_i, dM_g/da_o) of one ball at the contact angles, for the
+    race control p[RACE] (module docstring)."""
+    if om == 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    gam = p[GAMMA]
+    Jg = p[J_BALL] / gam
+    race = p[RACE]
+    if race == RACE_OUTER or race == RACE_INNER:
+        cd = ci * co + si * so
+        sd = si * co - ci * so
+        Dn = 1.0 + cd
+        if race == RACE_OUTER:
+            N = 1.0 - gam * ci
+            wc = om * N / Dn
+            dwi = om * (gam * si * Dn + N * sd) / (Dn * Dn)
+            dwo = -om * N * sd / (Dn * Dn)
+            Mg = Jg * wc * wc * so
+            dMi = Jg * 2.0 * wc * dwi * so
+            dMo = Jg * (2.0 * wc * dwo * so + wc * wc * co)
+        else:
+            N = cd - gam * co
+            P = 1.0 + gam * co
+            wc = om * N / Dn
+            dwi = -om * sd * P / (Dn * Dn)
+            dwo = om * ((sd + gam * so) * Dn - N * sd) / (Dn * Dn)
+            C0 = Jg * om * om
+            D2, D3 = Dn * Dn, Dn * Dn * Dn
+            Mg = C0 * P * N * si / D2
+            dMi = C0 * (P * (N * ci - sd * si) / D2 + 2.0 * P * N * si * sd / D3)
+            dMo = C0 * ((P * (sd + gam * so) - gam * so * N) * si / D2 - 2.0 * P * N * si * sd / D3)
+    else:
+        P = 1.0 + gam * co
+        N = 1.0 - gam * ci
+        S = P + N
+        wc = om * N / S
+        dwi = om * gam * si * P / (S * S)
+        dwo = om * gam * so * N / (S * S)
+        h = 0.5 * (ai - ao)
+        ch, sh = math.cos(h), math.sin(h)
+        bs = 0.5 * (ai + ao)
+        sb, cb = math.sin(bs), math.cos(bs)
+        C0 = p[J_BALL] * om * om / gam
+        den = ch * S * S
+        Mg = C0 * P * N * N * sb / den
+        dMi = C0 * (2.0 * P * N * gam * si * sb / den + P * N * N * 0.5 * cb / den
+                    + P * N * N * sb * 0.5 * sh / (ch * den) - 2.0 * P * N * N * sb * gam * si / (den * S))
+        dMo = C0 * (-gam * so * N * N * sb / den + P * N * N * 0.5 * cb / den
+                    - P * N * N * sb * 0.5 * sh / (ch * den) + 2.0 * P * N * N * sb * gam * so / (den * S))
+    mh = p[M_HALF_DM]
+    return mh * wc * wc, 2.0 * mh * wc * dwi, 2.0 * mh * wc * dwo, Mg, dMi, dMo
 
 
 @njit(cache=True)
@@ -85,43 +124,7 @@ def _terms(ua, ur, wa, wr, om, p, b):
         sq = math.sqrt(di)
         Qi = p[K_I] * di * sq
         dQi = 1.5 * p[K_I] * sq
-    Fc = dFci = dFco = Mg = dMi = dMo = 0.0
-    if om != 0.0:
-        gam = p[GAMMA]
-        if p[FULL] == 0.0:
-            cd = ci * co + si * so
-            sd = si * co - ci * so
-            N = 1.0 - gam * ci
-            Dn = 1.0 + cd
-            wc = om * N / Dn
-            dwi = om * (gam * si * Dn + N * sd) / (Dn * Dn)
-            dwo = -om * N * sd / (Dn * Dn)
-            Jg = p[J_BALL] / gam
-            Mg = Jg * wc * wc * so
-            dMi = Jg * 2.0 * wc * dwi * so
-            dMo = Jg * (2.0 * wc * dwo * so + wc * wc * co)
-        else:
-            P = 1.0 + gam * co
-            N = 1.0 - gam * ci
-            S = P + N
-            wc = om * N / S
-            dwi = om * gam * si * P / (S * S)
-            dwo = om * gam * so * N / (S * S)
-            h = 0.5 * (ai - ao)
-            ch, sh = math.cos(h), math.sin(h)
-            bs = 0.5 * (ai + ao)
-            sb, cb = math.sin(bs), math.cos(bs)
-            C0 = p[J_BALL] * om * om / gam
-            den = ch * S * S
-            Mg = C0 * P * N * N * sb / den
-            dMi = C0 * (2.0 * P * N * gam * si * sb / den + P * N * N * 0.5 * cb / den
-                        + P * N * N * sb * 0.5 * sh / (ch * den) - 2.0 * P * N * N * sb * gam * si / (den * S))
-            dMo = C0 * (-gam * so * N * N * sb / den + P * N * N * 0.5 * cb / den
-                        - P * N * N * sb * 0.5 * sh / (ch * den) + 2.0 * P * N * N * sb * gam * so / (den * S))
-        mh = p[M_HALF_DM]
-        Fc = mh * wc * wc
-        dFci = 2.0 * mh * wc * dwi
-        dFco = 2.0 * mh * wc * dwo
+    Fc, dFci, dFco, Mg, dMi, dMo = _speed_terms(si, ci, so, co, ai, ao, om, p)
     D = p[D_BALL]
     li, lo = p[LAM_I], p[LAM_O]
     cfi = li * Mg / D
@@ -368,16 +371,12 @@ def _solve_nested(Aa, Ar, om, p, b):
 
 @njit(cache=True)
 def solve_ball(Aa, Ar, om, p, xa, xr, b):
-    """Ball equilibrium for the groove-centre vector (Aa, Ar) at shaft speed om.
-
-    (xa, xr): a start (warm start; NaN for none).  Returns (X_a, X_r, iterations, ok); b holds the
-    terms at the solution.  At rest the closed form is used (iterations 0), and also when the
-    centrifugal force is below p[FC_FLOOR] (1e-8 of the ball's series Hertz load at 1 um approach:
-    below 0.04 rad/s for a 12.7 mm steel ball on a 90 mm pitch circle), where the ball would only be
-    pushed into a wedge by a force of no consequence.  Starts: the warm
-    start if its residual is below that of the built-in guess (the ball on the line O_o -> O_i,
-    pressed into the outer groove by its rest load plus the centrifugal force), else the guess;
-    the other start if Newton fails from the first; then the bracketing fallback _solve_nested."""
+    """Ball equilibrium for the groove-centre vector (Aa, Ar) at shaft speed om; (xa, xr): a warm start (NaN:
+    none).  Returns (X_a, X_r, iterations, ok); b holds the terms at the solution.  The closed form at rest
+    and below p[FC_FLOOR] of centrifugal force (1e-8 of the series Hertz load at 1 um: 0.04 rad/s for a
+    12.7 mm ball on a 90 mm pitch circle).  Starts: the warm start if its residual beats the built-in guess
+    (the ball on the line O_o -> O_i, pressed outwards by its rest load plus F_c), else the guess; the other
+    if Newton fails from the first; then the bracketing fallback _solve_nested."""
     L = math.sqrt(Aa * Aa + Ar * Ar)
     wc = 0.5 * om * (1.0 - p[GAMMA] * Ar / L)
     fc = p[M_HALF_DM] * wc * wc
@@ -443,13 +442,14 @@ def _ball_tangent(b, out):
 
 
 @njit(cache=True)
-def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, Z, X, f_rows, K_rows,
+def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, race, Z, X, f_rows, K_rows,
                   Qi, Qo, ai, ao, Fc, Mg, psi):
     """Reaction and tangent of every row at the inner-ring displacement q (5).
 
     Per row k: thrust direction row_sign[k], axial position of its inner groove-centre locus
     row_zc[k], preload offset row_offset[k] (added to the axial groove-centre distance) and
-    axial displacement row_w[k] of its outer ring.  X (rows, Z, 2): ball centres, start values
+    axial displacement row_w[k] of its outer ring; race[k, j]: race control of each ball (1 outer,
+    -1 inner, 0 full).  X (rows, Z, 2): ball centres, start values
     in (NaN for the built-in guess), solutions out.  f_rows (rows, 5): force on the shaft;
     K_rows (rows, 5, 5) = -df/dq.  Returns -1, or the flat index row * Z + ball of the first
     ball whose equilibrium failed."""
@@ -460,6 +460,7 @@ def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, Z, 
     ta = np.empty(5)
     tr = np.empty(5)
     em = np.empty(5)
+    pb = p.copy()
     for k in range(n_rows):
         s = float(row_sign[k])
         zc = row_zc[k]
@@ -479,7 +480,14 @@ def evaluate_rows(q, om, cage_angle, p, row_sign, row_zc, row_offset, row_w, Z, 
             for r in range(5):
                 Aa += ta[r] * q[r]
                 Ar += tr[r] * q[r]
-            xa, xr, its, ok = solve_ball(Aa, Ar, om, p, X[k, j, 0], X[k, j, 1], b)
+            code, c = race[k, j], p[COUPLE]
+            if code > 0:
+                pb[RACE], pb[LAM_I], pb[LAM_O] = RACE_OUTER, 0.0, 2.0 * c
+            elif code < 0:
+                pb[RACE], pb[LAM_I], pb[LAM_O] = RACE_INNER, 2.0 * c, 0.0
+            else:
+                pb[RACE], pb[LAM_I], pb[LAM_O] = RACE_FULL, c, c
+            xa, xr, its, ok = solve_ball(Aa, Ar, om, pb, X[k, j, 0], X[k, j, 1], b)
             if not ok:
                 return k * Z + j
             X[k, j, 0] = xa

@@ -34,6 +34,10 @@ def _row_label(state_or_sweep, k: int) -> str:
     return f"row {k + 1}{where} ({'+' if s > 0 else '-'}z thrust)"
 
 
+def _deg(x: float) -> str:
+    return f"{round(float(x), 1) + 0.0:.1f}"  # + 0.0: no "-0.0" for a round-off below zero
+
+
 def state_label(state: BallState) -> str:
     """Operating point of a state: load on the bearing and speed."""
     from .sweeps import _load_label
@@ -46,7 +50,7 @@ def plot_load_distribution(state: BallState, title: str | None = None) -> Figure
     ``title`` (default: load and speed of the state) heads the figure."""
     title = state_label(state) if title is None else title
     rows = state.row_sign.size
-    fig = _figure(4.3 * rows, 4.6)
+    fig = _figure(max(7.5, 4.3 * rows), 4.9)
     for k in range(rows):
         ax = fig.add_subplot(1, rows, k + 1, projection="polar")
         psi = np.append(state.psi_rad[k], state.psi_rad[k][0])
@@ -56,10 +60,46 @@ def plot_load_distribution(state: BallState, title: str | None = None) -> Figure
             ax.plot(psi, q, style, color=COLORS[k % 4], ms=3, lw=1.1, label=lab)
         a_i, a_o = state.contact_angle_inner_deg[k], state.contact_angle_outer_deg[k]
         ax.set_title(f"{_row_label(state, k)}\nthrust {state.row_axial_load_N[k]:.4g} N; alpha_i "
-                     f"{a_i.min():.3g}-{a_i.max():.3g} deg, alpha_o {a_o.min():.3g}-{a_o.max():.3g} deg", fontsize=8)
+                     f"{_deg(a_i.min())} to {_deg(a_i.max())} deg, alpha_o {_deg(a_o.min())} to {_deg(a_o.max())} deg",
+                     fontsize=8)
         ax.tick_params(labelsize=7)
         ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=7)
-    fig.suptitle(f"Ball contact loads [N] against azimuth (x at 0 deg)\n{title}", fontsize=9)
+    fig.suptitle("Ball contact loads [N] against azimuth (x at 0 deg)\n" + title.replace("; ", ";\n", 1), fontsize=9)
+    return fig
+
+
+def plot_contact_ellipses(state: BallState, title: str | None = None) -> Figure:
+    """Contact angle of every ball against its azimuth with the span of its contact ellipse along the groove
+    (a -/+ asin(a_H / (f D))) and the shoulder angle of each ring, one panel per row: a band above its
+    ring's dashed line is a truncated contact."""
+    title = state_label(state) if title is None else title
+    rows = state.row_sign.size
+    fig = _figure(max(9.0, 5.2 * rows), 4.6)
+    for k in range(rows):
+        ax = fig.add_subplot(1, rows, k + 1)
+        psi = np.degrees(state.psi_rad[k]) % 360.0
+        order = np.argsort(psi)
+        for race, color, sh in (("inner", "tab:red", state.shoulder_angle_inner_deg),
+                                ("outer", "tab:blue", state.shoulder_angle_outer_deg)):
+            alpha = getattr(state, f"contact_angle_{race}_deg")[k][order]
+            edge = getattr(state, f"edge_angle_{race}_deg")[k][order]
+            loaded = getattr(state, f"element_load_{race}_N")[k][order] > 0.0
+            cut = getattr(state, f"truncated_{race}")[k][order]
+            x = psi[order]
+            ax.plot(x, alpha, "-o", color=color, ms=3, lw=1.1, label=f"{race} contact angle")
+            lo = np.where(loaded, 2.0 * alpha - edge, alpha)
+            ax.fill_between(x, lo, np.where(loaded, edge, alpha), color=color, alpha=0.15, lw=0,
+                            label=f"{race} ellipse span")
+            ax.axhline(sh, color=color, ls="--", lw=1.0, label=f"{race} shoulder {sh:.3g} deg")
+            if np.any(cut):
+                ax.plot(x[cut], edge[cut], "x", color="k", ms=7, mew=1.5, label=f"{race}: truncated")
+        ax.set_xlabel("ball azimuth psi [deg] (x at 0)")
+        ax.set_ylabel("angle in the groove from the radial direction [deg]")
+        ax.set_title(_row_label(state, k), fontsize=8)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=6, loc="best")
+    fig.suptitle(f"Contact ellipses against the shoulders (truncation check), model {state.model}\n"
+                 + title.replace("; ", ";\n", 1), fontsize=9)
     return fig
 
 
@@ -76,6 +116,10 @@ def _stiffness_panels(fig: Figure, x: np.ndarray, sweep: BallSweep, x_label: str
                 tw.plot(x, sweep.row_axial_load_N[:, k], ":", color=COLORS[k % 4], lw=1.2,
                         label=f"thrust row {k + 1} [N]")
             tw.set_ylabel("row thrust [N]")
+            thrust = sweep.row_axial_load_N
+            if np.ptp(thrust) <= 1e-6 * max(1.0, float(np.max(np.abs(thrust)))):  # constant: no round-off scale
+                mid = float(np.mean(thrust))
+                tw.set_ylim(mid - 0.1 * abs(mid) - 1.0, mid + 0.1 * abs(mid) + 1.0)
             tw.legend(fontsize=7, loc="best")
 
 
@@ -97,7 +141,8 @@ def plot_stiffness_vs_speed(sweep: BallSweep, title: str = "") -> Figure:
 
 
 def plot_contact_angles_vs_speed(sweep: BallSweep, title: str = "") -> Figure:
-    """Inner and outer contact angles (range over the balls of each row) and contact loads against speed."""
+    """Inner and outer contact angles (range over the balls of each row) and contact loads against speed;
+    the speeds with a truncated contact are marked."""
     fig = _figure(11.0, 4.2)
     ax = fig.add_subplot(1, 2, 1)
     ax2 = fig.add_subplot(1, 2, 2)
@@ -113,6 +158,10 @@ def plot_contact_angles_vs_speed(sweep: BallSweep, title: str = "") -> Figure:
         for data, style, lab in ((sweep.element_load_inner_N, "-", "Q_i max"),
                                  (sweep.element_load_outer_N, "--", "Q_o max")):
             ax2.plot(x, data[:, k, :].max(axis=1), style, color=c, lw=1.4, label=f"{lab}, row {k + 1}")
+    cut = np.any(sweep.truncated_inner | sweep.truncated_outer, axis=(1, 2))
+    if np.any(cut):
+        ax.plot(x[cut], np.max(sweep.contact_angle_inner_deg[cut], axis=(1, 2)), "kx", ms=7,
+                label="contact ellipse truncated")
     ax.set_xlabel("speed [rpm]")
     ax.set_ylabel("contact angle [deg] (band: range over the balls)")
     ax.grid(True, alpha=0.3)
@@ -128,7 +177,8 @@ def plot_contact_angles_vs_speed(sweep: BallSweep, title: str = "") -> Figure:
 def figures(run) -> dict[str, Figure]:
     """All figures of a :class:`~.sweeps.BallRun`, keyed by a file stem."""
     title = run.title()
-    out = {"ball_load_distribution": plot_load_distribution(run.state, title)}
+    out = {"ball_load_distribution": plot_load_distribution(run.state, title),
+           "ball_contact_ellipses": plot_contact_ellipses(run.state, title)}
     if "preload" in run.sweeps:
         out["ball_stiffness_vs_preload"] = plot_stiffness_vs_preload(run.sweeps["preload"], _bearing_line(run))
     if "speed" in run.sweeps:
@@ -142,4 +192,4 @@ def _bearing_line(run) -> str:
     kind = g.arrangement if g.arrangement != "single" else "single row"
     return (f"{run.bearing.name}: {kind}, {g.balls} x {g.ball_diameter_m * 1e3:.4g} mm balls, d_m "
             f"{g.pitch_diameter_m * 1e3:.4g} mm, {math.degrees(g.contact_angle_rad):.3g} deg, "
-            f"model {run.bearing.model}")
+            f"model {run.model_setting}")

@@ -22,7 +22,7 @@ Rotor deck entry (``bearings:`` list), 5 DOF at its node::
       row_spacing_mm: 20.0             # axial distance between adjacent ball rows
       axial_direction: "+z"            # thrust the tandem rows carry (single, DT, 3-row sets)
       preload: {kind: position, axial_um: 21.0}   # or {kind: spring, axial_N: 250.0, floating: outward}
-      model: outer_race_control        # or full
+      model: outer_race_control        # or inner_race_control, full
       dynamic_load_rating_N: null      # catalogue C of ONE bearing; null: ISO 281 from geometry
       reliability_percent: 90.0        # L_n = a_1 L_10
       # optional, the bearing at temperature (docs/deck-format.md); materials take thermal_expansion_1_K
@@ -38,6 +38,21 @@ whose thrust points the ``floating`` way (all rows of a single bearing or tandem
 the shaft's thermal growth would load; ``inward`` the others; ``+z`` / ``-z`` name the thrust in the
 deck's frame.  A bearing at the middle of the shaft, and the standalone ``bearing`` section, take
 outward as +z.
+
+Standalone section (``spindlesim bearing``), the same keys plus::
+
+    bearing:
+      type: ball
+      ...
+      load: {fx_N: 0.0, fy_N: 0.0, fz_N: 0.0, mx_Nm: 0.0, my_Nm: 0.0}   # shaft on bearing
+      speed_rpm: 10000.0
+      held: {theta_x_mrad: 0.0, theta_y_mrad: 0.0}   # DOFs held at a displacement, the others free (x_um ...)
+      model: auto                      # the section also takes auto: Jones' criterion per ball and point
+      shoulders: {inner_height_mm: 3.8, outer_height_mm: 3.8}   # or *_angle_deg; default 0.3 D each
+      sweeps:
+        preload: {start: 0.0, stop: 40.0, count: 21}   # axial_um or axial_N (the preload's kind)
+        load: {component: fx_N, start: 0.0, stop: 5000.0, count: 11}
+        speed_rpm: {start: 0.0, stop: 20000.0, count: 21}
 """
 
 from __future__ import annotations
@@ -48,143 +63,15 @@ from typing import Annotated, Literal, Optional, Union
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Load5, NodeNumber, NonNegFloat, PositiveFloat, Range
+from .section_thermal import (BallFits, BallMaterial, BallMounting, BallTemperatures, growth_checks,  # noqa: F401
+                              thermal_inputs)
 
 LoadComponent = Literal["fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm"]
 LOAD_COMPONENTS = ("fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm")
-
-
-#: coefficient of thermal expansion [1/K]: bearing steel (100Cr6 / AISI 52100, 11-12.5e-6) and
-#: silicon nitride (about 3.2e-6); the default of a ball material below 5000 kg/m3 is the ceramic's
-STEEL_EXPANSION_1_K = 11.5e-6
-CERAMIC_EXPANSION_1_K = 3.2e-6
-CERAMIC_DENSITY_BELOW_KG_M3 = 5000.0
-#: largest interference (or clearance) of a fit, as a fraction of its diameter: above it the ring would be
-#: strained beyond yield (about 0.2-0.5 % for hardened steel), so the number is almost surely in the wrong unit
-MAX_FIT_FRACTION = 0.005
-#: absolute zero [C]
-ABSOLUTE_ZERO_C = -273.15
-
-Expansion = Annotated[float, Field(ge=-1.0, le=1e-3)]  # sign checked below, with the reason
-TemperatureC = Annotated[float, Field(ge=-1e4, le=2000.0)]  # absolute zero checked below, with the reason
-
-
-def _check_expansion(value: float | None, key: str) -> None:
-    if value is not None and not value >= 0.0:
-        raise ValueError(f"{key} = {value:g} is negative: a thermal expansion coefficient in 1/K is positive "
-                         f"(bearing steel about 11.5e-6, Si3N4 about 3.2e-6)")
-
-
-class BallMaterial(DeckModel):
-    E_GPa: PositiveFloat = 208.0
-    """Young's modulus."""
-    poisson: Annotated[float, Field(gt=-1.0, lt=0.5)] = 0.3
-    """Poisson's ratio (dimensionless)."""
-    density_kg_m3: PositiveFloat = 7850.0
-    """Density (the balls' centrifugal force and gyroscopic moment)."""
-    thermal_expansion_1_K: Optional[Expansion] = None
-    """Linear thermal expansion coefficient [1/K] of this part's material, for the bearing at temperature
-    (`temperatures_C`). None: bearing steel's 11.5e-6, or silicon nitride's 3.2e-6 when the density is below
-    5000 kg/m3 (docs/theory.md, "Spindle thermal model: heat generation and growth")."""
-
-    @model_validator(mode="after")
-    def _expansion(self):
-        _check_expansion(self.thermal_expansion_1_K, "thermal_expansion_1_K")
-        return self
-
-    def expansion_1_K(self) -> float:
-        if self.thermal_expansion_1_K is not None:
-            return self.thermal_expansion_1_K
-        return CERAMIC_EXPANSION_1_K if self.density_kg_m3 < CERAMIC_DENSITY_BELOW_KG_M3 else STEEL_EXPANSION_1_K
-
-
-class MountMaterial(DeckModel):
-    """Shaft or housing body of a fit."""
-
-    E_GPa: PositiveFloat
-    """Young's modulus of the shaft or housing body."""
-    poisson: Annotated[float, Field(gt=-1.0, lt=0.5)]
-    """Poisson's ratio of the body (dimensionless)."""
-    density_kg_m3: PositiveFloat
-    """Density of the body (the shaft's centrifugal growth at speed)."""
-    thermal_expansion_1_K: Expansion
-    """Linear thermal expansion coefficient of the body [1/K] (steel about 11.5e-6, grey cast iron 10-11e-6)."""
-
-    @model_validator(mode="after")
-    def _expansion(self):
-        _check_expansion(self.thermal_expansion_1_K, "thermal_expansion_1_K")
-        return self
-
-
-#: steel shaft; grey cast iron housing (E 110 GPa, 10-11e-6 1/K)
-STEEL_SHAFT = dict(E_GPa=208.0, poisson=0.3, density_kg_m3=7850.0, thermal_expansion_1_K=11.5e-6)
-CAST_IRON_HOUSING = dict(E_GPa=110.0, poisson=0.26, density_kg_m3=7200.0, thermal_expansion_1_K=10.5e-6)
-
-
-class BallTemperatures(DeckModel):
-    """Prescribed uniform temperatures of the parts [C] (as in MESYS): the bearing is computed with the
-    operating clearance and preload that its growth gives.  shaft / housing default to the rings'."""
-
-    inner_ring: TemperatureC
-    """Uniform temperature of the inner ring(s) [C]."""
-    outer_ring: TemperatureC
-    """Uniform temperature of the outer ring(s) [C]."""
-    rolling_elements: TemperatureC
-    """Uniform temperature of the balls [C]."""
-    reference: TemperatureC = 20.0
-    """Temperature [C] at which the geometry, the clearance, the preload and the fits are given (the cold
-    assembly); each part grows by its expansion coefficient times (T - reference)."""
-    shaft: Optional[TemperatureC] = None
-    """Temperature of the shaft at the inner-ring seat [C] (the inner fit). None: the inner ring's."""
-    housing: Optional[TemperatureC] = None
-    """Temperature of the housing at the outer-ring seat [C] (the outer fit). None: the outer ring's."""
-
-    @model_validator(mode="after")
-    def _above_absolute_zero(self):
-        for key in ("inner_ring", "outer_ring", "rolling_elements", "reference", "shaft", "housing"):
-            v = getattr(self, key)
-            if v is not None and not v > ABSOLUTE_ZERO_C:
-                raise ValueError(f"{key} = {v:g} C is at or below absolute zero (-273.15 C)")
-        return self
-
-
-class BallFits(DeckModel):
-    """Diametral interference (> 0) or clearance (< 0) of the ring seats at the reference temperature [um]."""
-
-    shaft: Annotated[float, Field(ge=-1e5, le=1e5)] = 0.0
-    """Diametral interference of the inner ring on the shaft [um] at the reference temperature (> 0: a press
-    fit; < 0: clearance)."""
-    housing: Annotated[float, Field(ge=-1e5, le=1e5)] = 0.0
-    """Diametral interference of the outer ring in the housing [um] at the reference temperature (> 0: a
-    press fit; < 0: clearance, the usual loose housing fit of a floating set)."""
-
-
-class BallMounting(DeckModel):
-    """Seats of the fits (needed with ``fits_um``): bearing bore and outside diameter, shaft bore,
-    housing outer diameter (null: a housing much thicker than the ring) and the two bodies."""
-
-    bore_mm: PositiveFloat
-    """Bearing bore d (the inner ring's seat on the shaft)."""
-    outer_diameter_mm: PositiveFloat
-    """Bearing outside diameter D (the outer ring's seat in the housing)."""
-    shaft_bore_mm: NonNegFloat = 0.0
-    """Bore of a hollow shaft at the seat (a drawbar bore); 0: solid."""
-    housing_outer_diameter_mm: Optional[PositiveFloat] = None
-    """Outer diameter of the housing around the seat. None: a housing much thicker than the ring (rigid)."""
-    shaft_material: MountMaterial = MountMaterial(**STEEL_SHAFT)
-    """Shaft body of the inner fit (default steel: 208 GPa, 0.3, 7850 kg/m3, 11.5e-6 1/K)."""
-    housing_material: MountMaterial = MountMaterial(**CAST_IRON_HOUSING)
-    """Housing body of the outer fit (default grey cast iron: 110 GPa, 0.26, 7200 kg/m3, 10.5e-6 1/K)."""
-
-    @model_validator(mode="after")
-    def _diameters(self):
-        if not self.shaft_bore_mm < self.bore_mm:
-            raise ValueError(f"shaft_bore_mm {self.shaft_bore_mm} must be smaller than bore_mm {self.bore_mm}")
-        if not self.outer_diameter_mm > self.bore_mm:
-            raise ValueError(f"outer_diameter_mm {self.outer_diameter_mm} must exceed bore_mm {self.bore_mm}")
-        h = self.housing_outer_diameter_mm
-        if h is not None and not h > self.outer_diameter_mm:
-            raise ValueError(f"housing_outer_diameter_mm {h} must exceed outer_diameter_mm {self.outer_diameter_mm}")
-        return self
+#: held-DOF keys, the DOF each names, its load component and the factor to SI
+HELD_KEYS = (("x_um", "x", "fx_N", 1e-6), ("y_um", "y", "fy_N", 1e-6), ("z_um", "z", "fz_N", 1e-6),
+             ("theta_x_mrad", "theta_x", "mx_Nm", 1e-3), ("theta_y_mrad", "theta_y", "my_Nm", 1e-3))
+Tilt_mrad = Annotated[float, Field(ge=-100.0, le=100.0)]
 
 
 class PositionPreload(DeckModel):
@@ -262,9 +149,11 @@ class _BallKeys(DeckModel):
     preload: Optional[PreloadSpec] = None
     """Preload of the set: {kind: position, axial_um} or {kind: spring, axial_N, floating}. None: no preload
     (only the clearance and the loads)."""
-    model: Literal["outer_race_control", "full"] = "outer_race_control"
-    """Ball equilibrium: outer_race_control (the whole gyroscopic couple on the outer contact, Jones 1960) or
-    full (the couple shared by both contacts, no race-control hypothesis)."""
+    model: Literal["outer_race_control", "inner_race_control", "full"] = "outer_race_control"
+    """Race control of the balls (Jones 1960): outer_race_control (the balls roll without spin on the outer
+    race, which carries the whole gyroscopic couple), inner_race_control (the same on the inner race) or full
+    (the couple shared by both contacts, no race-control hypothesis). Jones' criterion in the output of
+    `spindlesim bearing` says which one the contacts can hold."""
     dynamic_load_rating_N: Optional[PositiveFloat] = None
     """Basic dynamic load rating C of ONE bearing (a catalogue value) for the rating lives. None: computed from
     the geometry (ISO 281)."""
@@ -361,6 +250,56 @@ class BallSweeps(DeckModel):
     """Speed sweep at the section's load (stiffness and contact angles over speed)."""
 
 
+class HeldDofs(DeckModel):
+    """DOFs of the inner ring held at a prescribed displacement from the bearing centre; the other DOFs are free
+    and carry the load. A held DOF takes no load component: the bearing's reaction there is balanced by what
+    holds it, reported as the holding load."""
+
+    x_um: Optional[float] = None
+    """Radial displacement along x held at this value. None: free (carries fx_N)."""
+    y_um: Optional[float] = None
+    """Radial displacement along y held at this value. None: free (carries fy_N)."""
+    z_um: Optional[float] = None
+    """Axial displacement held at this value. None: free (carries fz_N)."""
+    theta_x_mrad: Optional[Tilt_mrad] = None
+    """Tilt about x held at this value [mrad]; 0 with theta_y_mrad 0 is a row on a shaft that does not let its
+    inner ring tilt. None: free (carries mx_Nm)."""
+    theta_y_mrad: Optional[Tilt_mrad] = None
+    """Tilt about y held at this value [mrad]. None: free (carries my_Nm)."""
+
+    def held(self):
+        """The SI :class:`~.equilibrium.Held` of these keys."""
+        from .equilibrium import Held
+
+        given = {dof: getattr(self, key) * f for key, dof, _, f in HELD_KEYS if getattr(self, key) is not None}
+        return Held.of(**given)
+
+
+class BallShoulders(DeckModel):
+    """Thrust-side shoulders of the rings (the high shoulder of an angular-contact ring), for the check of the
+    contact ellipse against the land: each ring as a height or as an angle, not both."""
+
+    inner_height_mm: Optional[PositiveFloat] = None
+    """Height of the inner ring's shoulder above its groove bottom (radial). None: inner_angle_deg, or 0.3 times
+    the ball diameter."""
+    outer_height_mm: Optional[PositiveFloat] = None
+    """Height of the outer ring's shoulder above its groove bottom (radial). None: outer_angle_deg, or 0.3 times
+    the ball diameter."""
+    inner_angle_deg: Optional[Annotated[float, Field(gt=0.0, lt=90.0)]] = None
+    """Angle at the inner groove's curvature centre, from the radial direction, where the shoulder ends the
+    groove: arccos(1 - h / (f_i D)) for a shoulder of height h. None: from inner_height_mm."""
+    outer_angle_deg: Optional[Annotated[float, Field(gt=0.0, lt=90.0)]] = None
+    """Angle at the outer groove's curvature centre where the shoulder ends the groove. None: from
+    outer_height_mm."""
+
+    @model_validator(mode="after")
+    def _one_per_ring(self):
+        for ring in ("inner", "outer"):
+            if getattr(self, f"{ring}_height_mm") is not None and getattr(self, f"{ring}_angle_deg") is not None:
+                raise ValueError(f"give {ring}_height_mm or {ring}_angle_deg, not both")
+        return self
+
+
 class BallSection(_BallKeys):
     """What `spindlesim bearing` computes: one ball bearing or matched set (``type: ball``) under a load:
     stiffness, ball loads, contact angles, pressures and lives, with optional sweeps."""
@@ -376,6 +315,16 @@ class BallSection(_BallKeys):
     """Inner-ring speed of the operating point (outer ring fixed)."""
     sweeps: BallSweeps = BallSweeps()
     """Optional sweeps over preload, load and speed, each around the operating point."""
+    model: Literal["outer_race_control", "inner_race_control", "full", "auto"] = "outer_race_control"
+    """Race control of the balls: outer_race_control, inner_race_control or full (as for a rotor entry), or auto:
+    at every operating point each ball takes the race Jones' criterion admits at its own state, and shares the
+    couple (full) when the criterion sends it back and forth (docs/theory.md, "Race control")."""
+    held: HeldDofs = HeldDofs()
+    """DOFs held at prescribed displacements, e.g. {theta_x_mrad: 0, theta_y_mrad: 0} for a single row whose
+    tilt the shaft holds; the others free under `load`. Default: every DOF free (the load alone decides)."""
+    shoulders: BallShoulders = BallShoulders()
+    """Shoulder heights or angles of the rings for the truncation check of the contact ellipses. Default: 0.3
+    times the ball diameter on both rings."""
 
     @model_validator(mode="after")
     def _sweeps(self):
@@ -436,72 +385,46 @@ def preload_unit_to_si(entry: _BallKeys, value: float) -> float:
     return 1e-6 * value if isinstance(entry.preload, PositionPreload) else float(value)
 
 
-def located_checks(entry: _BallKeys) -> list[tuple[tuple, str]]:
-    """Checks of the growth keys that pydantic cannot place on their key: (key path in the entry, message).
-    The deck loader reports them located; with temperatures the bearing at temperature is built once."""
+def section_checks(sec: BallSection) -> list[tuple[tuple, str]]:
+    """Checks of the held DOFs and the shoulders of a standalone section: (key path, message)."""
     bad: list[tuple[tuple, str]] = []
-    if entry.fits_um is not None and entry.mounting is None:
-        bad.append((("fits_um",), "fits_um needs mounting: {bore_mm, outer_diameter_mm} (the seat diameters), and "
-                                  "optionally shaft_bore_mm, housing_outer_diameter_mm and the two materials"))
-    m = entry.mounting
-    if entry.fits_um is not None and m is not None:
-        for key, value, dia in (("shaft", entry.fits_um.shaft, m.bore_mm),
-                                ("housing", entry.fits_um.housing, m.outer_diameter_mm)):
-            if abs(value) > MAX_FIT_FRACTION * dia * 1e3:
-                bad.append((("fits_um", key), f"{value:g} um is {abs(value) / (dia * 1e3) * 100:.3g} % of the {dia:g} mm "
-                                              f"seat (more than {MAX_FIT_FRACTION * 100:g} %: a hardened ring would "
-                                              "yield); fits are diametral interferences in micrometres"))
-    if m is not None:
-        dm, D = entry.pitch_diameter_mm, entry.ball_diameter_mm
-        if not m.bore_mm < dm - D:
-            bad.append((("mounting", "bore_mm"), f"{m.bore_mm:g} mm must be below the inner raceway (about pitch "
-                                                 f"diameter - ball diameter = {dm - D:g} mm)"))
-        if not m.outer_diameter_mm > dm + D:
-            bad.append((("mounting", "outer_diameter_mm"), f"{m.outer_diameter_mm:g} mm must exceed the outer raceway "
-                                                           f"(about pitch diameter + ball diameter = {dm + D:g} mm)"))
-    if bad or thermal_inputs(entry) is None:
-        return bad
-    from .growth import at_temperature
-
-    temps, ring, ball, mounting = thermal_inputs(entry)
-    try:
-        at_temperature(geometry_from(entry), preload_from(entry), temps, ring, ball, mounting)
-    except ValueError as exc:
-        key = "temperatures_C" if entry.temperatures_C is not None else "fits_um"
-        bad.append(((key,), str(exc)))
+    load = sec.load.model_dump()
+    for key, dof, comp, _ in HELD_KEYS:
+        if getattr(sec.held, key) is None:
+            continue
+        if load[comp] != 0.0:
+            bad.append((("held", key), f"{dof} is held, so load.{comp} ({load[comp]:g}) cannot act on it: a held DOF "
+                                       f"carries what holds it (the holding load); drop load.{comp} or free {dof}"))
+        if sec.sweeps.load is not None and sec.sweeps.load.component == comp:
+            bad.append((("sweeps", "load", "component"), f"{comp} is the load of the held DOF {dof} (held.{key})"))
+    A0_um = 1e3 * (sec.inner_conformity + sec.outer_conformity - 1.0) * sec.ball_diameter_mm
+    R_mm = 0.5 * sec.pitch_diameter_mm
+    for key, size in (("x_um", 1.0), ("y_um", 1.0), ("z_um", 1.0), ("theta_x_mrad", R_mm), ("theta_y_mrad", R_mm)):
+        v = getattr(sec.held, key)
+        if v is not None and abs(v) * size >= A0_um:
+            bad.append((("held", key), f"{v:g} moves the inner groove centre {abs(v) * size:.4g} um at a ball, beyond "
+                                       f"the groove-centre distance (f_i + f_o - 1) D = {A0_um:.4g} um: the rings "
+                                       "would pass through the balls"))
+    if sec.held.z_um is not None and isinstance(sec.preload, SpringPreload) and sec.arrangement in ("single", "DT"):
+        bad.append((("held", "z_um"), "every row floats on the spring preload, so the set carries exactly the spring "
+                                      "force axially wherever the inner ring sits: z cannot be held"))
+    D = sec.ball_diameter_mm
+    for ring, f in (("inner", sec.inner_conformity), ("outer", sec.outer_conformity)):
+        h = getattr(sec.shoulders, f"{ring}_height_mm")
+        if h is not None and not h < f * D:
+            bad.append((("shoulders", f"{ring}_height_mm"), f"{h:g} mm is not below the groove radius f D = "
+                                                            f"{f * D:.4g} mm: the groove ends at 90 deg there"))
     return bad
 
 
-def thermal_inputs(entry: _BallKeys):
-    """(temperatures, ring, ball, mounting) in SI for :func:`~.growth.at_temperature`, or None when the
-    entry has none of temperatures_C, fits_um, mounting (the bearing as made, at the reference state)."""
-    if entry.temperatures_C is None and entry.fits_um is None and entry.mounting is None:
-        return None
-    from ...thermal.growth import ThermoElastic
-    from ...thermal.growth_bearings import BearingTemperatures, Mounting
-
-    def thermo(m, expansion):
-        return ThermoElastic(1e9 * m.E_GPa, m.poisson, m.density_kg_m3, expansion)
-
-    t = entry.temperatures_C
-    if t is None:
-        temps = BearingTemperatures.uniform(20.0)
-    else:
-        temps = BearingTemperatures(t.inner_ring, t.outer_ring, t.rolling_elements, t.reference, t.shaft, t.housing)
-    ring = thermo(entry.material, entry.material.expansion_1_K())
-    bm = entry.material if entry.ball_material is None else entry.ball_material
-    ball = thermo(bm, bm.expansion_1_K())
-    mounting = None
-    if entry.mounting is not None:
-        m, f = entry.mounting, entry.fits_um if entry.fits_um is not None else BallFits()
-        mounting = Mounting(
-            bore_m=1e-3 * m.bore_mm, outer_diameter_m=1e-3 * m.outer_diameter_mm,
-            shaft_interference_m=1e-6 * f.shaft, housing_interference_m=1e-6 * f.housing,
-            shaft_bore_m=1e-3 * m.shaft_bore_mm,
-            housing_outer_diameter_m=math.inf if m.housing_outer_diameter_mm is None else 1e-3 * m.housing_outer_diameter_mm,
-            shaft=thermo(m.shaft_material, m.shaft_material.thermal_expansion_1_K),
-            housing=thermo(m.housing_material, m.housing_material.thermal_expansion_1_K))
-    return temps, ring, ball, mounting
+def located_checks(entry) -> list[tuple[tuple, str]]:
+    """Checks that pydantic cannot place on their key: (key path in the entry, message).  The deck loader
+    reports them located: the growth keys (:func:`.section_thermal.growth_checks`) and, for the
+    standalone section, the held DOFs and the shoulders (:func:`section_checks`)."""
+    bad = growth_checks(entry)
+    if isinstance(entry, BallSection):
+        bad += section_checks(entry)
+    return bad
 
 
 def build(entry: _BallKeys):
@@ -538,8 +461,20 @@ def build(entry: _BallKeys):
             "bearing %r at %s: operating clearance %.4g um (%+.4g um), preload offset change %+.4g um",
             entry.name, "temperature" if entry.temperatures_C is not None else "its fits", growth.clearance_m * 1e6,
             growth.clearance_change_m * 1e6, growth.preload_offset_change_m * 1e6)
+    shoulders = None
+    sh = getattr(entry, "shoulders", None)
+    if sh is not None:
+        from .checks import shoulders_of
+
+        rad = math.radians
+        shoulders = shoulders_of(
+            geometry, None if sh.inner_height_mm is None else 1e-3 * sh.inner_height_mm,
+            None if sh.outer_height_mm is None else 1e-3 * sh.outer_height_mm,
+            None if sh.inner_angle_deg is None else rad(sh.inner_angle_deg),
+            None if sh.outer_angle_deg is None else rad(sh.outer_angle_deg))
     return BallBearing(
-        geometry, preload, name=entry.name, node=getattr(entry, "node", 1) - 1, model=entry.model,
+        geometry, preload, name=entry.name, node=getattr(entry, "node", 1) - 1, shoulders=shoulders,
+        model="outer_race_control" if entry.model == "auto" else entry.model,
         rating=RatingInputs(dynamic_load_rating_N=entry.dynamic_load_rating_N,
                             reliability_percent=entry.reliability_percent),
         speed_growth=speed_growth, growth=growth, made=made_as)
