@@ -183,9 +183,9 @@ def simulation_figure(sim: SimulationResult, title: str | None = None, periods_s
     ax_p.set_ylabel(labels[1])
     ax_p.legend(fontsize="small", loc="upper right")
     ax_p.grid(True, alpha=0.3)
-    verdict = "stable" if sim.stable else "chatter"
-    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {verdict} "
-                 f"(growth per period {sim.growth_per_period:.4f})", fontsize="medium")
+    word, _, basis = sim.verdict.partition(": ")
+    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {word.upper()}\n{basis}",
+                 fontsize="medium")
     return fig
 
 

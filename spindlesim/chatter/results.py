@@ -6,7 +6,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe_diagram_from_lobes"]
+__all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe_diagram_from_lobes",
+           "STABLE_GROWTH", "DECAYED", "DIED_OUT"]
+
+#: Poincare criterion of the time-domain simulation: stable when the fitted growth per tooth period is
+#: below STABLE_GROWTH and the last distance below DECAYED of the largest, or below DIED_OUT of it
+STABLE_GROWTH, DECAYED, DIED_OUT = 0.999, 0.1, 1e-6
 
 
 @dataclass(frozen=True, eq=False)
@@ -98,6 +103,25 @@ class SimulationResult:
     out_of_cut_fraction: float  # share of engaged edge-steps (static chip >= 10 % of max) out of cut, last half
     steps_per_period: int
     fft_bin_hz: float
+
+    @property
+    def verdict(self) -> str:
+        """The verdict and the numbers it rests on (the Poincare criterion), in words."""
+        g, d = self.growth_per_period, self.decay_ratio
+        if self.stable:
+            if d < DIED_OUT:
+                return f"stable: the vibration died out (last Poincare distance {d:.1e} of the largest)"
+            return (f"stable: decaying by {g:.4f} per tooth period (< {STABLE_GROWTH}), last Poincare distance "
+                    f"{d:.2g} of the largest (< {DECAYED})")
+        if d >= DECAYED:
+            why = (f"not decaying: last Poincare distance {d:.2g} of the largest (stable needs < {DECAYED}), "
+                   f"fitted growth {g:.4f} per tooth period")
+        else:
+            why = (f"the late vibration does not decay: growth {g:.4f} per tooth period (stable needs "
+                   f"< {STABLE_GROWTH}) after falling to {d:.2g} of the largest")
+        if self.out_of_cut_fraction > 0.05:
+            why += f"; tool out of the cut {100 * self.out_of_cut_fraction:.0f} % of the time"
+        return f"chatter: {why}"
 
 
 def lobe_diagram_from_lobes(speed_rpm: np.ndarray, depth: np.ndarray, freq: np.ndarray, lobe_numbers,

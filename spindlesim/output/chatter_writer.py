@@ -107,7 +107,7 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
     for k, s in enumerate(result.simulations):
         a = {"speed_rpm": s.speed_rpm, "depth_m": s.depth_m, "stable": s.stable,
              "tooth_frequency_hz": s.tooth_frequency_hz, "growth_per_period": s.growth_per_period,
-             "fft_bin_hz": s.fft_bin_hz}
+             "fft_bin_hz": s.fft_bin_hz, "decay_ratio": s.decay_ratio, "verdict": s.verdict}
         if np.isfinite(s.chatter_frequency_hz):  # NaN when stable: the attribute is left out
             a["chatter_frequency_hz"] = s.chatter_frequency_hz
         attrs[f"/chatter/simulation/{k + 1}"] = a

@@ -260,7 +260,9 @@ def _chatter(f):
     for name in g.get("simulation", {}):
         s = g["simulation"][name].attrs
         state = "stable" if s["stable"] else f"CHATTER at {float(s['chatter_frequency_hz']):.0f} Hz"
-        lines.append(f"  simulation {float(s['speed_rpm']):g} rpm, {float(s['depth_m']) * 1e3:g} mm: {state}")
+        basis = str(s["verdict"]).partition(": ")[2] if "verdict" in s else ""
+        lines.append(f"  simulation {float(s['speed_rpm']):g} rpm, {float(s['depth_m']) * 1e3:g} mm: {state}"
+                     + (f" ({basis})" if basis else ""))
     return lines, data
 
 
