@@ -47,7 +47,9 @@ class LobeDiagram:
     ``limit_depth_m`` is the lower envelope over the lobes (NaN: no instability found, e.g.
     above the SD map's depth range), ``chatter_frequency_hz`` the frequency of the critical
     lobe, ``boundary_kind`` its kind (``hopf``/``flip``/``""``).  ``stability_map`` is set by
-    the semi-discretization.
+    the semi-discretization.  ``method_per_speed`` names the method that produced each speed's
+    limit, ``capped`` marks the speeds found stable up to ``depth_cap_m`` (the largest depth
+    searched; their limit is NaN and at least the cap), ``selection`` says which method ran and why.
     """
 
     speed_rpm: np.ndarray
@@ -60,6 +62,17 @@ class LobeDiagram:
     stability_map: StabilityMap | None = None
     frf_at_each_speed: bool = False
     notes: tuple[str, ...] = ()
+    method_per_speed: np.ndarray = field(default_factory=lambda: np.array([], dtype=object))
+    capped: np.ndarray = field(default_factory=lambda: np.array([], dtype=bool))
+    depth_cap_m: float = float("nan")
+    selection: str = ""
+
+    def __post_init__(self) -> None:
+        S = len(self.speed_rpm)
+        if len(self.method_per_speed) != S:
+            object.__setattr__(self, "method_per_speed", np.full(S, self.method, dtype=object))
+        if len(self.capped) != S:
+            object.__setattr__(self, "capped", np.zeros(S, bool))
 
     def limit_at(self, speed_rpm: float | np.ndarray) -> np.ndarray:
         """Limit depth interpolated linearly between the computed speeds."""
