@@ -10,8 +10,10 @@ where needed until the interval spans at least +-``MIN_TOLERANCE`` (1 %) of the 
 speed control, and the lobes' own uncertainty: a 1 % error in a natural frequency moves them by
 1 %).  The recommendation is the middle of the interval of the deepest pocket, with that depth
 and half the interval as the tolerable speed error: a speed within it keeps the limit at or above
-the depth, as far as the speed grid resolves the diagram.  A maximum at either end of the speed
-range is not a pocket (the limit may go on rising beyond it).
+the depth, as far as the speed grid resolves the diagram.  Between grid speeds the limit is only
+interpolated, so a pocket whose interval holds fewer than ``MIN_GRID_SPEEDS`` (3) grid speeds (a
+cusp between two grid points) is recommended only when no pocket is resolved.  A maximum at either
+end of the speed range is not a pocket (the limit may go on rising beyond it).
 """
 
 from __future__ import annotations
@@ -22,10 +24,11 @@ import numpy as np
 
 from .results import LobeDiagram
 
-__all__ = ["Pocket", "stability_pockets", "best_pocket", "POCKET_LEVEL", "MIN_TOLERANCE"]
+__all__ = ["Pocket", "stability_pockets", "best_pocket", "POCKET_LEVEL", "MIN_TOLERANCE", "MIN_GRID_SPEEDS"]
 
 POCKET_LEVEL = 0.9
 MIN_TOLERANCE = 0.01
+MIN_GRID_SPEEDS = 3
 
 
 @dataclass(frozen=True)
@@ -109,5 +112,8 @@ def stability_pockets(diagram: LobeDiagram, level: float = POCKET_LEVEL,
 
 
 def best_pocket(pockets: tuple[Pocket, ...]) -> Pocket | None:
-    """The deepest pocket (its depth held over at least +-MIN_TOLERANCE of the speed), if any."""
-    return pockets[0] if pockets else None
+    """The deepest pocket resolved by the speed grid (at least MIN_GRID_SPEEDS grid speeds in its
+    interval), else the deepest of all; None without pockets."""
+    resolved = [p for p in pockets if p.grid_speeds >= MIN_GRID_SPEEDS]
+    pool = resolved or list(pockets)
+    return pool[0] if pool else None

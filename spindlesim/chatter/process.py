@@ -105,8 +105,11 @@ class _Base:
         """Which method runs and why, in words (the summary and chatter.h5 say it)."""
         m = METHOD_TITLES[self.method_for(requested)]
         if requested != "auto":
-            return f"{m}, as requested"
+            return f"{m}, as requested" + self._requested_caveat(requested)
         return f"auto: {m}; {self._auto_reason()}"
+
+    def _requested_caveat(self, requested: str) -> str:
+        return ""
 
     def _auto_reason(self) -> str:
         return "one edge in a continuous cut, where Tlusty's oriented-FRF solution is exact"
@@ -242,10 +245,18 @@ class MillingProcess(_Base):
     def auto_method(self) -> str:
         """Zero order only where it is exact: the directional matrix constant over the tooth period
         (to ZERO_ORDER_FLUCTUATION); semi-discretization everywhere else.  Measured against an
-        independent semi-discretization (tests/validation/test_chatter_auto.py): wherever the
-        matrix fluctuates, down to 30 % of its mean (8 teeth, half or three-quarter immersion), the
-        zero-order limit came out up to 30 % to 3 times too high at some speeds."""
+        independent semi-discretization (docs/validation.md, "Which method"): in down milling with a
+        fluctuating matrix, down to 30 % of its mean (8 teeth, half immersion), the zero-order limit
+        came out 8 % to 21 times too high at some speed; one tooth always in the cut (4 teeth, half
+        immersion) +92 %."""
         return "zero_order" if self.directional_fluctuation() <= ZERO_ORDER_FLUCTUATION else "semi_discretization"
+
+    def _requested_caveat(self, requested: str) -> str:
+        if requested != "zero_order" or self.auto_method() == "zero_order":
+            return ""
+        return (f"; CAUTION: the directional matrix fluctuates by {100 * self.directional_fluctuation():.0f} % of its "
+                "mean, and the zero-order limit can be far too high (docs/validation.md: up to +92 % with one tooth "
+                "always in the cut); method auto runs the semi-discretization")
 
     def _auto_reason(self) -> str:
         fl = self.directional_fluctuation()

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 __all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe_diagram_from_lobes",
-           "STABLE_GROWTH", "DECAYED", "DIED_OUT"]
+           "STABLE_GROWTH", "DECAYED", "DIED_OUT", "speed_runs"]
 
 #: Poincare criterion of the time-domain simulation: stable when the fitted growth per tooth period is
 #: below STABLE_GROWTH and the last distance below DECAYED of the largest, or below DIED_OUT of it
@@ -158,3 +158,20 @@ def lobe_diagram_from_lobes(speed_rpm: np.ndarray, depth: np.ndarray, freq: np.n
         env[none], fc[none] = np.nan, np.nan
     kind = np.where(np.isnan(env), "", "hopf")
     return LobeDiagram(speed_rpm, env, fc, lobes, method, process, kind, None, frf_at_each_speed, notes)
+
+
+def speed_runs(speeds: np.ndarray) -> str:
+    """Speeds as runs of neighbouring grid speeds, '5,000-6,500, 9,000 rpm' (text for notes and files)."""
+    speeds = np.asarray(speeds, float)
+    if not len(speeds):
+        return ""
+    step = float(np.min(np.diff(speeds))) if len(speeds) > 1 else 0.0
+    parts, start, prev = [], speeds[0], speeds[0]
+    for s in list(speeds[1:]) + [None]:
+        if s is not None and step > 0 and s - prev <= 1.5 * step:
+            prev = s
+            continue
+        parts.append(f"{start:,.0f}" if start == prev else f"{start:,.0f}-{prev:,.0f}")
+        if s is not None:
+            start = prev = s
+    return ", ".join(parts) + " rpm"

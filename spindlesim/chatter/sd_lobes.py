@@ -39,7 +39,7 @@ import logging
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from .results import LobeCurve, LobeDiagram, StabilityMap
+from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
 from .semi_discretization import SdProblem
 from .state_space import ToolSource, as_state_space, tool_at_speeds
@@ -278,22 +278,6 @@ def _merge_rows(base: dict, redo: dict, sel: np.ndarray) -> None:
         base["depths"] = redo["depths"]
 
 
-def _speed_list(speeds: np.ndarray) -> str:
-    """Speeds as compact runs: '5,000-6,500, 9,000 rpm' (runs of consecutive grid speeds)."""
-    if not len(speeds):
-        return ""
-    parts, start, prev = [], speeds[0], speeds[0]
-    step = np.min(np.diff(speeds)) if len(speeds) > 1 else 0.0
-    for s in list(speeds[1:]) + [None]:
-        if s is not None and step > 0 and s - prev <= 1.5 * step:
-            prev = s
-            continue
-        parts.append(f"{start:,.0f}" if start == prev else f"{start:,.0f}-{prev:,.0f}")
-        if s is not None:
-            start = prev = s
-    return ", ".join(parts) + " rpm"
-
-
 def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray, *,
                               steps: int | None = None, order: int = 1, points_per_wave: float = 30.0,
                               min_steps: int = 30, max_steps: int = 400, steps_in_cut: int = STEPS_IN_CUT,
@@ -357,7 +341,7 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     if capped.any():
         notes.append(f"{int(capped.sum())} speed(s) stable up to the depth cap {grid.cap * 1e3:.4g} mm, the "
                      f"largest depth searched (the limit is at least that; NaN in limit_depth_m): "
-                     f"{_speed_list(speeds[capped])}")
+                     f"{speed_runs(speeds[capped])}")
     notes.append(f"steps per tooth period {m_s.min()}-{m_s.max()} (at least {steps_in_cut} in the cut "
                  f"unless fixed; the cut is {100 * process.cut_fraction:.3g} % of the tooth period)")
     smap = StabilityMap(speeds, res["depths"], res["rho"], m_s, order)

@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Callable
 
+import logging
+
 import numpy as np
 
 from .pockets import Pocket, best_pocket, stability_pockets
@@ -24,6 +26,8 @@ from .turning import turning_lobes
 from .zero_order import zero_order_lobes
 
 __all__ = ["METHODS", "stability_lobes", "ChatterResult", "run_chatter"]
+
+log = logging.getLogger(__name__)
 
 METHODS: dict[str, Callable[..., LobeDiagram]] = {
     "oriented_frf": turning_lobes,
@@ -41,7 +45,10 @@ def stability_lobes(process, tool: ToolSource, speeds_rpm, method: str = "auto",
     the others ignore what they do not use).
     """
     diagram = METHODS[process.method_for(method)](process, tool, np.asarray(speeds_rpm, float), **options)
-    return replace(diagram, selection=process.method_note(method))
+    note = process.method_note(method)
+    if "CAUTION" in note:
+        log.warning("%s", note)
+    return replace(diagram, selection=note)
 
 
 @dataclass(frozen=True, eq=False)

@@ -13,7 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from ..chatter.pockets import MIN_TOLERANCE, POCKET_LEVEL
+from ..chatter.pockets import MIN_GRID_SPEEDS, MIN_TOLERANCE, POCKET_LEVEL
+from ..chatter.results import speed_runs
 from .hdf5 import Data, RunInfo, labels, write_h5
 from .rotor_writers import tool_point_frf
 
@@ -96,9 +97,11 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
              "recommended_speed_tolerance_rpm": r.tolerance_rpm, "pocket_speed_min_rpm": r.speed_min_rpm,
              "pocket_speed_max_rpm": r.speed_max_rpm, "pocket_peak_depth_m": r.peak_depth_m,
              "pocket_peak_speed_rpm": r.peak_speed_rpm, "pocket_level": r.level, "pocket_capped": r.capped,
-             "recommendation": (f"the middle of the deepest stability pocket; over the speed interval the limit "
-                                f"stays at or above the depth, {POCKET_LEVEL:.0%} of the pocket's peak or less where "
-                                f"needed for the interval to span +-{MIN_TOLERANCE:.0%} of the speed")}
+             "pocket_grid_speeds": r.grid_speeds,
+             "recommendation": (f"the middle of the deepest stability pocket resolved by at least {MIN_GRID_SPEEDS} "
+                                f"grid speeds (else the deepest); over the speed interval the limit stays at or above "
+                                f"the depth, {POCKET_LEVEL:.0%} of the pocket's peak or less where needed for the "
+                                f"interval to span +-{MIN_TOLERANCE:.0%} of the speed")}
     return data, attrs
 
 
@@ -138,6 +141,8 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
         "capped_speeds": int(np.count_nonzero(dg.capped)), "notes": "; ".join(dg.notes), **pocket_attrs}}
     if np.isfinite(dg.depth_cap_m):
         attrs["/chatter"]["depth_cap_m"] = dg.depth_cap_m
+    if np.any(dg.capped):
+        attrs["/chatter"]["capped_speeds_rpm"] = speed_runs(dg.speed_rpm[np.asarray(dg.capped, bool)])
     for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
         if key in info:
             attrs["/chatter"][{"node": "tool_point_node"}.get(key, key)] = info[key]

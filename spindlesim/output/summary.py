@@ -261,7 +261,8 @@ def _chatter(f):
         data.update(minimum_limit_depth_m=d, minimum_at_speed_rpm=s)
     if int(a.get("capped_speeds", 0)):
         lines.append(f"  {int(a['capped_speeds'])} speed(s) stable up to the depth cap "
-                     f"{float(a['depth_cap_m']) * 1e3:.3g} mm (the largest depth searched)")
+                     f"{float(a['depth_cap_m']) * 1e3:.3g} mm (the largest depth searched; no limit below it): "
+                     f"{a.get('capped_speeds_rpm', '')}")
     if "recommended_speed_rpm" in a:
         n, tol = float(a["recommended_speed_rpm"]), float(a["recommended_speed_tolerance_rpm"])
         dep, peak = float(a["recommended_depth_m"]), float(a["pocket_peak_depth_m"])
@@ -269,6 +270,9 @@ def _chatter(f):
                      f"{float(a['pocket_speed_min_rpm']):,.0f}-{float(a['pocket_speed_max_rpm']):,.0f} rpm, where the "
                      f"limit stays at or above {float(a['pocket_level']):.0%} of the pocket's "
                      f"{'>= ' if bool(a['pocket_capped']) else ''}{peak * 1e3:.3g} mm)")
+        if int(a.get("pocket_grid_speeds", 3)) < 3:
+            lines.append(f"    (no pocket holds 3 or more grid speeds; this one {int(a['pocket_grid_speeds'])}: refine the "
+                         "speed grid around it before relying on it)")
         data.update(recommended_speed_rpm=n, recommended_depth_m=dep, recommended_speed_tolerance_rpm=tol)
     elif "recommendation" in a:
         lines.append(f"  recommended: {a['recommendation']}")

@@ -25,6 +25,8 @@ def test_auto_method_per_process():
     assert z.method == "zero_order" and set(z.method_per_speed) == {"zero_order"} and "constant" in z.selection
     assert stability_lobes(slot4, TOOL, speeds, "semi_discretization", n_depths=6).selection == \
         "semi-discretization (Insperger-Stepan), as requested"
+    forced = stability_lobes(half, TOOL, speeds, "zero_order")
+    assert forced.selection.startswith("zero order (Altintas-Budak), as requested; CAUTION")
     assert stability_lobes(TurningProcess(2e9, 1.2), TOOL, speeds).method == "oriented_frf"
     with pytest.raises(ValueError, match="does not apply"):
         stability_lobes(half, TOOL, speeds, "oriented_frf")

@@ -8,9 +8,9 @@ from spindlesim.chatter import LobeDiagram, best_pocket, stability_pockets
 SPEEDS = np.arange(1000.0, 2001.0, 10.0)
 
 
-def _diagram(limit, capped=None, cap=np.nan):
+def _diagram(limit, capped=None, cap=np.nan, speeds=SPEEDS):
     n = len(limit)
-    return LobeDiagram(SPEEDS, np.asarray(limit, float), np.full(n, 900.0), (), "semi_discretization", "test",
+    return LobeDiagram(speeds, np.asarray(limit, float), np.full(n, 900.0), (), "semi_discretization", "test",
                        capped=np.zeros(n, bool) if capped is None else capped, depth_cap_m=cap)
 
 
@@ -52,3 +52,16 @@ def test_capped_speeds_count_at_the_cap():
     assert p.capped and p.peak_depth_m == 1.9 and p.peak_speed_rpm == 1500.0
     assert p.speed_min_rpm < 1480.0 < 1520.0 < p.speed_max_rpm
     assert stability_pockets(_diagram(np.linspace(1.0, 2.0, len(SPEEDS)))) == ()
+
+
+def test_a_pocket_between_two_grid_speeds_is_not_preferred():
+    """On a 50 rpm grid a cusp to 5 at 1,700 rpm (neighbours 1) keeps +-1 % (17 rpm) between two grid
+    speeds only: deeper, but resolved by one grid speed; a lower pocket spanning many grid speeds is
+    recommended instead, the cusp only when alone."""
+    coarse = np.arange(1000.0, 2001.0, 50.0)
+    cusp = np.where(coarse == 1700.0, 5.0, 1.0)
+    broad = np.maximum(1.0, 1.5 - 0.002 * np.abs(coarse - 1200.0))
+    pockets = stability_pockets(_diagram(np.maximum(cusp, broad), speeds=coarse))
+    assert pockets[0].peak_speed_rpm == 1700.0 and pockets[0].grid_speeds == 1
+    assert best_pocket(pockets).peak_speed_rpm == 1200.0 and best_pocket(pockets).grid_speeds >= 3
+    assert best_pocket(stability_pockets(_diagram(cusp, speeds=coarse))).peak_speed_rpm == 1700.0

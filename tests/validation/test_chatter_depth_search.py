@@ -29,6 +29,22 @@ SLOT = MillingProcess(2, 20e-3, 20e-3, "down", 6e8, 1 / 3)
 SPEEDS = np.linspace(5000.0, 25000.0, 41)
 
 
+SLOT_DECK = """
+chatter:
+  operation: milling
+  speeds_rpm: {start: 15000, stop: 25000, count: 21}
+  Kt_N_mm2: 600.0
+  Kn_N_mm2: 200.0
+  teeth: 2
+  tool_diameter_mm: 20.0
+  radial_depth_mm: 20.0
+  mode: down
+  frf:
+    modes:
+      - {direction: x, frequency_hz: 922.0, damping_ratio: 0.011, stiffness_N_m: 1.34e6}
+"""
+
+
 @pytest.mark.slow
 def test_slotting_benchmark_has_every_boundary_and_a_robust_recommendation():
     """41 speeds: every limit found (0.319 mm at 16,000 rpm to 3.96 mm at 23,000 rpm; none capped).
@@ -54,11 +70,11 @@ def test_slotting_benchmark_has_every_boundary_and_a_robust_recommendation():
 
 
 @pytest.mark.slow
-def test_speeds_stable_up_to_the_cap_are_reported_and_are_stable_there():
+def test_speeds_stable_up_to_the_cap_are_reported_and_are_stable_there(tmp_path):
     """5 % immersion up milling: at 24,000-25,000 rpm the limit exceeds the default cap, 20 x the
     smallest zero-order limit (29.8 mm): those speeds are flagged, listed in the notes, and the
     reference finds no instability below the cap there (its limit at 24,000 rpm: 34.0 mm).  A deck
-    cap (depth_max_mm) replaces the default."""
+    cap (depth_max_mm) replaces the default; the summary prints the capped speeds."""
     p = MillingProcess(2, 20e-3, 1e-3, "up", 6e8, 1 / 3)
     d = stability_lobes(p, TOOL, SPEEDS)
     zoa = stability_lobes(p, TOOL, SPEEDS, "zero_order")
@@ -73,26 +89,19 @@ def test_speeds_stable_up_to_the_cap_are_reported_and_are_stable_there():
         a_sd = d.limit_depth_m[SPEEDS == s][0]
         a, bound = ref.limit(s, 1.5 * a_sd, k=30, grid=40)
         assert abs(a_sd / a - 1) < 0.01 + bound / a
+    deck = tmp_path / "five.yaml"
+    deck.write_text(SLOT_DECK.replace("radial_depth_mm: 20.0", "radial_depth_mm: 1.0").replace("mode: down", "mode: up")
+                    .replace("{start: 15000, stop: 25000, count: 21}", "{start: 22000, stop: 25000, count: 7}")
+                    + "  semi_discretization: {depth_max_mm: 29.8}\n")
+    res = CliRunner().invoke(main, ["chatter", str(deck), "-o", str(tmp_path / "out")])
+    assert res.exit_code == 0, res.output
+    assert "3 speed(s) stable up to the depth cap 29.8 mm" in res.output and "24,000-25,000 rpm" in res.output
     few = SPEEDS[-8:]
     capped = stability_lobes(p, TOOL, few, depth_max_m=10e-3, n_depths=20)
     assert capped.depth_cap_m == 10e-3 and capped.capped.sum() >= 3
     assert np.all(capped.limit_depth_m[~capped.capped] <= 10e-3)
 
 
-SLOT_DECK = """
-chatter:
-  operation: milling
-  speeds_rpm: {start: 15000, stop: 25000, count: 21}
-  Kt_N_mm2: 600.0
-  Kn_N_mm2: 200.0
-  teeth: 2
-  tool_diameter_mm: 20.0
-  radial_depth_mm: 20.0
-  mode: down
-  frf:
-    modes:
-      - {direction: x, frequency_hz: 922.0, damping_ratio: 0.011, stiffness_N_m: 1.34e6}
-"""
 
 
 @pytest.mark.slow
