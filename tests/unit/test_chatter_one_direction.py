@@ -16,8 +16,7 @@ from spindlesim.output.rotor_writers import dynamic_stiffness
 MILLING_X_ONLY = """
 chatter:
   operation: milling
-  speeds_rpm: {start: 8000, stop: 20000, count: 7}
-  method: zero_order
+  speeds_rpm: {start: 8000, stop: 20000, count: 5}
   Kt_N_mm2: 600.0
   Kn_N_mm2: 200.0
   teeth: 2
@@ -65,9 +64,11 @@ def test_chatter_command_with_modes_in_one_direction(tmp_path, section, flexible
     with h5py.File(tmp_path / "out" / "chatter.h5") as f:
         g = f["chatter"]
         assert np.all(np.isfinite(g["limit_depth_m"][:])) and np.all(g["limit_depth_m"][:] > 0)
-        for name in ("speed_rpm", "limit_depth_m", "chatter_frequency_hz", "boundary_kind", "frf/frequency_hz",
-                     "frf/receptance_m_N", "frf/dynamic_stiffness_N_m"):
+        for name in ("speed_rpm", "limit_depth_m", "chatter_frequency_hz", "boundary_kind", "method", "capped",
+                     "frf/frequency_hz", "frf/receptance_m_N", "frf/dynamic_stiffness_N_m"):
             assert name in g, name
+        if g.attrs["operation"] == "milling":  # auto: semi-discretization (half immersion, 2 teeth)
+            assert g.attrs["method"] == "semi_discretization" and "stability_map/spectral_radius" in g
         H = g["frf/receptance_m_N"][:]
         Z = g["frf/dynamic_stiffness_N_m"][:]
         d = flexible
