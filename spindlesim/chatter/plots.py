@@ -7,6 +7,7 @@ state-space model on its own frequency grid).
 
 from __future__ import annotations
 
+import textwrap
 from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
@@ -200,8 +201,8 @@ def simulation_figure(sim: SimulationResult, title: str | None = None, periods_s
     ax_p.legend(fontsize="small", loc="upper right")
     ax_p.grid(True, alpha=0.3)
     word, _, basis = sim.verdict.partition(": ")
-    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {word.upper()}\n{basis}",
-                 fontsize="medium")
+    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {word.upper()}\n"
+                 + textwrap.fill(basis, 110), fontsize="medium")
     return fig
 
 
