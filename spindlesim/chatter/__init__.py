@@ -10,6 +10,7 @@ deck loader and the ``spindlesim chatter`` command build on it.
   :func:`zero_order_lobes` (Altintas-Budak) and :func:`semi_discretization_lobes`
   (Insperger-Stepan, with the stability map); :func:`simulate` (time domain);
 * results: :class:`LobeDiagram`, :class:`LobeCurve`, :class:`StabilityMap`, :class:`SimulationResult`;
+  :func:`stability_pockets` and :func:`best_pocket` (the speed to recommend);
 * deck: :class:`ChatterSection`, :func:`build_chatter`, :func:`run_chatter`;
 * figures: :mod:`spindlesim.chatter.plots`.
 """
@@ -36,6 +37,9 @@ _EXPORTS = {
     "SimulationResult": "results",
     "StabilityMap": "results",
     "semi_discretization_lobes": "sd_lobes",
+    "Pocket": "pockets",
+    "stability_pockets": "pockets",
+    "best_pocket": "pockets",
     "ChatterSection": "section",
     "ChatterSpec": "section",
     "build_chatter": "section",
@@ -61,6 +65,6 @@ __all__ = [
     "FrfFileError", "read_frf", "read_frf_csv", "read_frf_uff", "write_frf_csv", "combine_frfs",
     "LobeCurve", "LobeDiagram", "SimulationResult", "StabilityMap",
     "stability_lobes", "turning_lobes", "turning_parametric_lobes", "oriented_frf", "zero_order_lobes",
-    "semi_discretization_lobes", "simulate",
+    "semi_discretization_lobes", "simulate", "Pocket", "stability_pockets", "best_pocket",
     "ChatterSection", "ChatterSpec", "build_chatter", "ChatterResult", "run_chatter",
 ]

@@ -7,11 +7,14 @@ state-space model on its own frequency grid).
 
 from __future__ import annotations
 
+import textwrap
 from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
 from .frf import DIRECTIONS, ToolPointFrf
+from .pockets import Pocket
+from .process import METHOD_TITLES
 from .results import LobeDiagram, SimulationResult
 from .state_space import ToolPointModel
 
@@ -24,19 +27,22 @@ _KIND_STYLE = {"hopf": ("C0", "-"), "flip": ("C3", "-"), "fold": ("C2", "-"), ""
 
 
 def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lobes: bool = True,
-                        simulations: Sequence[SimulationResult] = (), depth_max_mm: float | None = None) -> Figure:
+                        simulations: Sequence[SimulationResult] = (), depth_max_mm: float | None = None,
+                        recommendation: Pocket | None = None) -> Figure:
     """Limit depth [mm] against speed [rpm]; stable region shaded, lobe numbers at each lobe's minimum.
 
-    Flip (period-doubling) parts of a semi-discretization boundary are drawn in red.
-    Simulated points: o stable, x chatter.
+    Flip (period-doubling) parts of a semi-discretization boundary are drawn in red; speeds stable up
+    to the depth cap are marked at the cap; the recommended pocket is drawn as its speed interval at
+    its depth with the recommended speed.  Simulated points: o stable, x chatter.
     """
     fig = _figure(9.0, 5.0)
     ax = fig.add_subplot()
     n = diagram.speed_rpm
     lim = 1e3 * diagram.limit_depth_m
-    top = depth_max_mm or (1.15 * np.nanmax(lim) if np.any(np.isfinite(lim)) else 1.0)
-    if diagram.stability_map is not None:
-        top = depth_max_mm or 1e3 * diagram.stability_map.depth_m[-1]
+    capped = np.asarray(diagram.capped, bool) & ~np.isfinite(lim)
+    cap_mm = 1e3 * diagram.depth_cap_m if np.isfinite(diagram.depth_cap_m) else np.nan
+    tops = [np.nanmax(lim) if np.any(np.isfinite(lim)) else 1.0] + ([cap_mm] if capped.any() else [])
+    top = depth_max_mm or 1.12 * max(tops)
     ax.fill_between(n, 0.0, np.where(np.isfinite(lim), lim, top), color="C2", alpha=0.18, lw=0,
                     label="stable")
     if show_lobes:
@@ -50,6 +56,14 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
             mark = (kinds == kd) | np.r_[kinds[1:] == kd, False] | np.r_[False, kinds[:-1] == kd]
             ax.plot(n, np.where(mark, lim, np.nan), color=_KIND_STYLE[kd][0], lw=1.8,
                     label=f"limit depth ({'period doubling' if kd == 'flip' else kd})")
+    if capped.any():
+        ax.plot(n[capped], np.full(capped.sum(), cap_mm), "^", color="C2", ms=4,
+                label=f"stable up to the depth cap {cap_mm:.3g} mm")
+    if recommendation is not None:
+        r = recommendation
+        ax.plot([r.speed_min_rpm, r.speed_max_rpm], [1e3 * r.depth_m] * 2, color="k", lw=1.2)
+        ax.plot([r.speed_rpm], [1e3 * r.depth_m], "*", color="k", ms=11,
+                label=f"recommended {r.speed_rpm:,.0f} +- {r.tolerance_rpm:,.0f} rpm, {1e3 * r.depth_m:.3g} mm")
     placed: list[float] = []
     span = n[-1] - n[0] if len(n) > 1 else 1.0
     for c in sorted(diagram.lobes, key=lambda c: c.lobe):
@@ -69,7 +83,8 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
     ax.set_ylim(0.0, top)
     ax.set_xlabel("spindle speed [rpm]")
     ax.set_ylabel("limit depth of cut [mm]")
-    ax.set_title(title or f"{diagram.process}\n{diagram.method.replace('_', ' ')}"
+    used = list(dict.fromkeys(str(m) for m in diagram.method_per_speed)) or [diagram.method]
+    ax.set_title(title or f"{diagram.process}\n{METHOD_TITLES.get(used[0], used[0]) if len(used) == 1 else 'mixed: ' + ', '.join(u.replace('_', ' ') for u in used)}"
                  + (" (FRF at every speed)" if diagram.frf_at_each_speed else ""), fontsize="medium")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left", fontsize="small")
@@ -116,16 +131,18 @@ def stability_map_figure(diagram: LobeDiagram, title: str | None = None, rho_ran
     fig = _figure(9.0, 5.0)
     ax = fig.add_subplot()
     d_mm = 1e3 * smap.depth_m
-    mesh = ax.pcolormesh(smap.speed_rpm, d_mm, smap.spectral_radius.T, shading="nearest", cmap="RdBu_r",
+    rho = np.ma.masked_invalid(smap.spectral_radius.T)  # NaN: not evaluated (above the first crossing)
+    mesh = ax.pcolormesh(smap.speed_rpm, d_mm, rho, shading="nearest", cmap="RdBu_r",
                          vmin=rho_range[0], vmax=rho_range[1])
     fig.colorbar(mesh, ax=ax).set_label("spectral radius of the monodromy matrix")
-    if len(smap.speed_rpm) > 1 and len(d_mm) > 1:
-        ax.contour(smap.speed_rpm, d_mm, smap.spectral_radius.T, levels=[1.0], colors="k", linewidths=0.8)
+    if len(smap.speed_rpm) > 1 and len(d_mm) > 1 and not np.ma.is_masked(rho) and np.any(rho >= 1.0):
+        ax.contour(smap.speed_rpm, d_mm, rho, levels=[1.0], colors="k", linewidths=0.8)
     ax.plot(diagram.speed_rpm, 1e3 * diagram.limit_depth_m, "k.", ms=3, label="first crossing (refined)")
     ax.set_xlabel("spindle speed [rpm]")
     ax.set_ylabel("depth of cut [mm]")
     ax.set_ylim(0.0, d_mm[-1])
-    ax.set_title(title or f"{diagram.process}\nsemi-discretization, order {smap.order}", fontsize="medium")
+    ax.set_title(title or f"{diagram.process}\nsemi-discretization, order {smap.order}"
+                 + (" (evaluated up to the first crossing)" if np.ma.is_masked(rho) else ""), fontsize="medium")
     ax.legend(loc="upper left", fontsize="small")
     return fig
 
@@ -183,9 +200,9 @@ def simulation_figure(sim: SimulationResult, title: str | None = None, periods_s
     ax_p.set_ylabel(labels[1])
     ax_p.legend(fontsize="small", loc="upper right")
     ax_p.grid(True, alpha=0.3)
-    verdict = "stable" if sim.stable else "chatter"
-    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {verdict} "
-                 f"(growth per period {sim.growth_per_period:.4f})", fontsize="medium")
+    word, _, basis = sim.verdict.partition(": ")
+    fig.suptitle(title or f"{sim.speed_rpm:.0f} rpm, depth {1e3 * sim.depth_m:.3g} mm: {word.upper()}\n"
+                 + textwrap.fill(basis, 110), fontsize="medium")
     return fig
 
 

@@ -33,14 +33,21 @@ semi-discretization and the simulation; the zero-order average does not depend o
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 import numpy as np
 
-__all__ = ["TurningProcess", "MillingProcess", "CuttingTables", "Process", "METHOD_NAMES"]
+__all__ = ["TurningProcess", "MillingProcess", "CuttingTables", "Process", "METHOD_NAMES", "ZERO_ORDER_FLUCTUATION"]
 
 METHOD_NAMES = ("oriented_frf", "zero_order", "semi_discretization")
+#: how the methods are named in text
+METHOD_TITLES = {"oriented_frf": "oriented FRF (Tlusty)", "zero_order": "zero order (Altintas-Budak)",
+                 "semi_discretization": "semi-discretization (Insperger-Stepan)"}
+
+#: ``auto`` trusts the zero-order average only where the directional matrix is constant over the tooth
+#: period to this fraction of its mean (docs/theory.md, "Which method: auto"; docs/validation.md)
+ZERO_ORDER_FLUCTUATION = 0.01
 
 
 def _rotation(theta: float) -> np.ndarray:
@@ -88,6 +95,24 @@ class _Base:
 
     def auto_method(self) -> str:
         return self.default_method
+
+    @property
+    def cut_fraction(self) -> float:
+        """Share of the tooth period during which some edge cuts (1: a continuous cut)."""
+        return 1.0
+
+    def method_note(self, requested: str = "auto") -> str:
+        """Which method runs and why, in words (the summary and chatter.h5 say it)."""
+        m = METHOD_TITLES[self.method_for(requested)]
+        if requested != "auto":
+            return f"{m}, as requested" + self._requested_caveat(requested)
+        return f"auto: {m}; {self._auto_reason()}"
+
+    def _requested_caveat(self, requested: str) -> str:
+        return ""
+
+    def _auto_reason(self) -> str:
+        return "one edge in a continuous cut, where Tlusty's oriented-FRF solution is exact"
 
 
 @dataclass(frozen=True)
@@ -163,7 +188,6 @@ class MillingProcess(_Base):
     feed_per_tooth_m: float = 1e-4
     feed_direction_rad: float = 0.0
     axial_slices: int = 16
-    sd_below_immersion: float = 0.30
 
     operation = "milling"
     periods_per_rev = property(lambda self: self.teeth)
@@ -193,9 +217,56 @@ class MillingProcess(_Base):
             return 0.0, float(np.arccos(1.0 - 2.0 * r))
         return float(np.arccos(2.0 * r - 1.0)), float(np.pi)
 
+    @property
+    def teeth_in_cut(self) -> float:
+        """Mean number of teeth in the cut, N (exit - entry) / 2 pi."""
+        st, ex = self.entry_exit_rad
+        return self.teeth * (ex - st) / (2 * np.pi)
+
+    @property
+    def cut_fraction(self) -> float:
+        """Share of the tooth period during which a tooth cuts: min(1, teeth in the cut)."""
+        return min(1.0, self.teeth_in_cut)
+
+    def directional_fluctuation(self, samples: int = 720) -> float:
+        """max over the tooth period of |K(t) - K0| / |K0| (spectral norms; helix left out).
+
+        Zero for a full slot with an even number of teeth of at least four (the teeth in the cut
+        then cancel each other's harmonics, and entries coincide with exits), where the zero-order
+        average is exact."""
+        plain = replace(self, helix_rad=0.0) if self.helix_rad else self
+        K = plain.directional_steps(samples, 1.0)
+        K0 = plain.mean_directional()
+        n0 = np.linalg.norm(K0, 2)
+        if not n0 > 0:
+            return float("inf")
+        return float(np.max(np.linalg.norm(K - K0, 2, axis=(1, 2))) / n0)
+
     def auto_method(self) -> str:
-        """Semi-discretization below 30 % radial immersion (flip lobes), zero-order above."""
-        return "semi_discretization" if self.immersion < self.sd_below_immersion else "zero_order"
+        """Zero order only where it is exact: the directional matrix constant over the tooth period
+        (to ZERO_ORDER_FLUCTUATION); semi-discretization everywhere else.  Measured against an
+        independent semi-discretization (docs/validation.md, "Which method"): in down milling with a
+        fluctuating matrix, down to 30 % of its mean (8 teeth, half immersion), the zero-order limit
+        came out 8 % to 21 times too high at some speed; one tooth always in the cut (4 teeth, half
+        immersion) +92 %."""
+        return "zero_order" if self.directional_fluctuation() <= ZERO_ORDER_FLUCTUATION else "semi_discretization"
+
+    def _requested_caveat(self, requested: str) -> str:
+        if requested != "zero_order" or self.auto_method() == "zero_order":
+            return ""
+        return (f"; CAUTION: the directional matrix fluctuates by {100 * self.directional_fluctuation():.0f} % of its "
+                "mean, and the zero-order limit can be far too high (docs/validation.md: up to +92 % with one tooth "
+                "always in the cut); method auto runs the semi-discretization")
+
+    def _auto_reason(self) -> str:
+        fl = self.directional_fluctuation()
+        n = self.teeth_in_cut
+        where = (f"{n:.2g} {'tooth' if abs(n - 1) < 5e-3 else 'teeth'} in the cut on average, the directional "
+                 f"matrix fluctuates by {100 * fl:.0f} % of its mean over the tooth period")
+        if fl <= ZERO_ORDER_FLUCTUATION:
+            return f"{where}: it is constant, and the zero-order average exact"
+        return (f"{where}; the zero-order average is exact only for a constant matrix (a full slot with "
+                "4, 6, ... teeth) and can be too high elsewhere")
 
     def _to_tool(self, K: np.ndarray) -> np.ndarray:
         R = _rotation(self.feed_direction_rad)

@@ -6,7 +6,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe_diagram_from_lobes"]
+__all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe_diagram_from_lobes",
+           "STABLE_GROWTH", "DECAYED", "DIED_OUT", "speed_runs"]
+
+#: Poincare criterion of the time-domain simulation: stable when the fitted growth per tooth period is
+#: below STABLE_GROWTH and the last distance below DECAYED of the largest, or below DIED_OUT of it
+STABLE_GROWTH, DECAYED, DIED_OUT = 0.999, 0.1, 1e-6
 
 
 @dataclass(frozen=True, eq=False)
@@ -42,7 +47,9 @@ class LobeDiagram:
     ``limit_depth_m`` is the lower envelope over the lobes (NaN: no instability found, e.g.
     above the SD map's depth range), ``chatter_frequency_hz`` the frequency of the critical
     lobe, ``boundary_kind`` its kind (``hopf``/``flip``/``""``).  ``stability_map`` is set by
-    the semi-discretization.
+    the semi-discretization.  ``method_per_speed`` names the method that produced each speed's
+    limit, ``capped`` marks the speeds found stable up to ``depth_cap_m`` (the largest depth
+    searched; their limit is NaN and at least the cap), ``selection`` says which method ran and why.
     """
 
     speed_rpm: np.ndarray
@@ -55,6 +62,17 @@ class LobeDiagram:
     stability_map: StabilityMap | None = None
     frf_at_each_speed: bool = False
     notes: tuple[str, ...] = ()
+    method_per_speed: np.ndarray = field(default_factory=lambda: np.array([], dtype=object))
+    capped: np.ndarray = field(default_factory=lambda: np.array([], dtype=bool))
+    depth_cap_m: float = float("nan")
+    selection: str = ""
+
+    def __post_init__(self) -> None:
+        S = len(self.speed_rpm)
+        if len(self.method_per_speed) != S:
+            object.__setattr__(self, "method_per_speed", np.full(S, self.method, dtype=object))
+        if len(self.capped) != S:
+            object.__setattr__(self, "capped", np.zeros(S, bool))
 
     def limit_at(self, speed_rpm: float | np.ndarray) -> np.ndarray:
         """Limit depth interpolated linearly between the computed speeds."""
@@ -99,6 +117,25 @@ class SimulationResult:
     steps_per_period: int
     fft_bin_hz: float
 
+    @property
+    def verdict(self) -> str:
+        """The verdict and the numbers it rests on (the Poincare criterion), in words."""
+        g, d = self.growth_per_period, self.decay_ratio
+        if self.stable:
+            if d < DIED_OUT:
+                return f"stable: the vibration died out (last Poincare distance {d:.1e} of the largest)"
+            return (f"stable: decaying by {g:.4f} per tooth period (< {STABLE_GROWTH}), last Poincare distance "
+                    f"{d:.2g} of the largest (< {DECAYED})")
+        if d >= DECAYED:
+            why = (f"not decaying: last Poincare distance {d:.2g} of the largest (stable needs < {DECAYED}), "
+                   f"fitted growth {g:.4f} per tooth period")
+        else:
+            why = (f"the late vibration does not decay: growth {g:.4f} per tooth period (stable needs "
+                   f"< {STABLE_GROWTH}) after falling to {d:.2g} of the largest")
+        if self.out_of_cut_fraction > 0.05:
+            why += f"; tool out of the cut {100 * self.out_of_cut_fraction:.0f} % of the time"
+        return f"chatter: {why}"
+
 
 def lobe_diagram_from_lobes(speed_rpm: np.ndarray, depth: np.ndarray, freq: np.ndarray, lobe_numbers,
                             method: str, process: str, frf_at_each_speed: bool,
@@ -121,3 +158,20 @@ def lobe_diagram_from_lobes(speed_rpm: np.ndarray, depth: np.ndarray, freq: np.n
         env[none], fc[none] = np.nan, np.nan
     kind = np.where(np.isnan(env), "", "hopf")
     return LobeDiagram(speed_rpm, env, fc, lobes, method, process, kind, None, frf_at_each_speed, notes)
+
+
+def speed_runs(speeds: np.ndarray) -> str:
+    """Speeds as runs of neighbouring grid speeds, '5,000-6,500, 9,000 rpm' (text for notes and files)."""
+    speeds = np.asarray(speeds, float)
+    if not len(speeds):
+        return ""
+    step = float(np.min(np.diff(speeds))) if len(speeds) > 1 else 0.0
+    parts, start, prev = [], speeds[0], speeds[0]
+    for s in list(speeds[1:]) + [None]:
+        if s is not None and step > 0 and s - prev <= 1.5 * step:
+            prev = s
+            continue
+        parts.append(f"{start:,.0f}" if start == prev else f"{start:,.0f}-{prev:,.0f}")
+        if s is not None:
+            start = prev = s
+    return ", ".join(parts) + " rpm"

@@ -1,29 +1,35 @@
-"""Lobe diagram by semi-discretization: stability map and its boundary.
+"""Lobe diagram by semi-discretization: the first depth at which the cut turns unstable, at every speed.
 
-1. The spectral radius rho of the monodromy matrix (:mod:`spindlesim.chatter.semi_discretization`)
-   is computed on a speed x depth grid (the stability map).
-2. At every speed the boundary is the *first* depth at which rho reaches 1 going up from zero
-   depth (a cut is always stable at zero depth).  Stable pockets above it (closed flip islands
-   at low immersion) stay visible in the map and are counted in the notes; the limit depth is
-   the one a user can trust from zero upwards.
-3. Every local maximum of rho along the depth grid below that point which comes within
-   ``peak_check`` (0.9) of 1 is maximised between its neighbours (bounded Brent), so an island
-   thinner than the grid step is still caught when its peak shows in the grid values; then the
-   bracketing interval is refined by the Illinois (modified regula falsi) iteration on
-   rho(a) - 1 to a relative depth tolerance ``rtol``.  Refine the grid (``n_depths``) where
-   islands must not be missed.
-4. At the boundary the critical multiplier gives the kind (hopf/flip), the dominant chatter
+1. Steps per tooth period, per speed: m = max(min_steps, points_per_wave x f_top x tau,
+   steps_in_cut / cut fraction), rounded up to a multiple of 10 and at most ``max_steps`` (the floor
+   in the cut may exceed it, up to HARD_MAX_STEPS).  f_top is 1.2 x the highest mode with at least
+   5 % of the largest peak compliance (the others do not chatter; the structure itself is
+   integrated exactly); the floor keeps ``steps_in_cut`` (20) steps inside a short cut (at 5 %
+   immersion about 6 steps of the plain rule fell in the cut, and flip boundaries came out
+   1.5-1.9 % high).  ``steps`` fixes m for all speeds.
+2. Depths: ``depths_m`` as given; or ``n_depths`` up to ``depth_max_m``, which is then also the
+   cap; by default ``n_depths`` up to 1.25 min(max a_ZOA, 3 min a_ZOA) from the zero-order solution,
+   extended for the speeds still stable there by doubling (``n_depths`` / 2 points a time) up to the
+   cap CAP_FACTOR x min a_ZOA.  A speed stable up to the cap is "capped": its limit is NaN and at
+   least the cap, and the notes list it.
+3. The spectral radius rho of the monodromy matrix is evaluated going up the depths, all speeds
+   still stable together, until it reaches 1 (the first unstable depth; one more depth above is
+   evaluated so that the stability map shows the crossing).  A cut is always stable at zero depth;
+   the limit is the one a user can trust from zero upwards.
+4. Every local maximum of rho below that point which comes within ``peak_check`` (0.9) of 1 is
+   maximised between its neighbours (bounded Brent), so an island thinner than the grid step is
+   caught when its peak shows in the grid values; then the bracket is refined by the ITP method
+   (regula falsi with bisection's worst case) on rho(a) - 1 to a relative depth tolerance ``rtol``.
+5. At the boundary the critical multiplier gives the kind (hopf/flip), the dominant chatter
    frequency and the lobe number; lobes are the boundary segments of one (kind, number).
+6. Error control: rho at the limit with about half the steps estimates the depth's discretisation
+   error (second-order convergence, over the slope d rho / d a of the last bracket: large on a steep
+   lobe flank, where rho crosses 1 at a shallow angle).  A speed whose estimate exceeds ERROR_TOL
+   (0.5 %), or whose chatter wave got fewer than half the ``points_per_wave``, is solved again with
+   enough steps (for 0.2 %).
 
-Without a depth grid the range is set from the zero-order solution at the same speeds:
-(0, 1.25 min(max a_ZOA, 3 min a_ZOA)] in ``n_depths`` equal steps.
-
-Steps per tooth period: the discretised delay must resolve the chatter wave, of which there are
-f tau per period (the lobe number), so by default every speed gets
-m = max(min_steps, points_per_wave x f_top x tau) rounded up to a multiple of 10, f_top the highest
-natural frequency among the modes with at least 5 % of the largest peak compliance (x 1.2; the
-others do not chatter, and the structure itself is integrated exactly); ``steps`` fixes m for
-all speeds.
+A large tool-point model (a rotor's) is replaced by its dominant modes and the static rest
+(:mod:`spindlesim.chatter.sd_model`), checked on the zero-order lobes.
 """
 
 from __future__ import annotations
@@ -33,38 +39,19 @@ import logging
 import numpy as np
 from scipy.optimize import minimize_scalar
 
-from .results import LobeCurve, LobeDiagram, StabilityMap
+from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
+from .sd_model import models_for_sd
 from .semi_discretization import SdProblem
 from .state_space import ToolSource, as_state_space, tool_at_speeds
 
-__all__ = ["semi_discretization_lobes", "boundary_from_map"]
+__all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_STEPS"]
 
 log = logging.getLogger(__name__)
 METHOD = "semi_discretization"
-
-
-def _default_depths(process, tools, speeds, n_depths: int) -> np.ndarray:
-    from .zero_order import zero_order_lobes  # range estimate only
-
-    zoa = zero_order_lobes(process, tools if len(tools) > 1 else tools[0], speeds)
-    env = zoa.limit_depth_m[np.isfinite(zoa.limit_depth_m)]
-    if len(env) == 0:
-        raise ValueError("cannot size the depth range: give depths_m or depth_max_m")
-    top = 1.25 * min(env.max(), 3.0 * env.min())
-    return np.linspace(top / n_depths, top, n_depths)
-
-
-def boundary_from_map(rho: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Index of the first unstable depth per speed (-1 if none) and the count of stable pockets
-    above it (rho[s, d] over increasing depths)."""
-    unstable = rho >= 1.0
-    first = np.where(unstable.any(axis=1), np.argmax(unstable, axis=1), -1)
-    pockets = np.zeros(len(first), int)
-    for s, j in enumerate(first):
-        if j >= 0:
-            u = unstable[s, j:]
-            pockets[s] = int(np.count_nonzero(u[:-1] & ~u[1:]))
-    return first, pockets
+CAP_FACTOR = 20.0  # default depth cap: this many times the smallest zero-order limit
+ERROR_TOL = 5e-3  # estimated relative depth error above which a speed is solved again with more steps
+STEPS_IN_CUT = 20
+HARD_MAX_STEPS = 2000
 
 
 class _Grouped:
@@ -95,11 +82,79 @@ class _Grouped:
         return self.problems[self.group[s]].critical(int(self.local[s]), depth)
 
 
-def _auto_steps(process, models, speeds, points_per_wave, min_steps, max_steps) -> np.ndarray:
+#: step counts are rounded up to this ladder (multiples of 10, about 15 % apart above 100), so that
+#: speeds share a count and are solved together
+_LADDER = np.unique(np.r_[np.arange(10, 100, 10), 10 * np.round(10 * 1.15 ** np.arange(40))]).astype(int)
+
+
+def _round_steps(m: np.ndarray, max_steps: int, floor: np.ndarray) -> np.ndarray:
+    m = np.maximum(np.minimum(m, max_steps), floor)
+    if np.any(floor > HARD_MAX_STEPS):
+        log.warning("a cut this short needs more than %d steps per tooth period; using %d", HARD_MAX_STEPS,
+                    HARD_MAX_STEPS)
+    m = np.minimum(m, HARD_MAX_STEPS)
+    return _LADDER[np.minimum(np.searchsorted(_LADDER, m), len(_LADDER) - 1)]
+
+
+def _auto_steps(process, models, speeds, points_per_wave, min_steps, max_steps, steps_in_cut) -> np.ndarray:
     f_top = 1.2 * max(md.frequency_hz for mdl in models for md in mdl.significant_modes(0.05))
-    m = np.ceil(points_per_wave * f_top * process.tooth_period_s(speeds))
-    m = 10 * np.ceil(np.clip(m, min_steps, max_steps) / 10)
-    return m.astype(int)
+    m = np.maximum(min_steps, np.ceil(points_per_wave * f_top * process.tooth_period_s(speeds)))
+    return _round_steps(m, max_steps, _floor(process, len(speeds), steps_in_cut))
+
+
+def _floor(process, S: int, steps_in_cut: int) -> np.ndarray:
+    return np.full(S, np.ceil(steps_in_cut / process.cut_fraction))
+
+
+def _zoa_scale(process, model, zoa) -> tuple[float, float]:
+    """(smallest, largest) finite zero-order limit; 1 / (|K0| max |H|) when there is none (the
+    zero-order limit is at least half that)."""
+    env = zoa.limit_depth_m[np.isfinite(zoa.limit_depth_m)]
+    if len(env):
+        return float(env.min()), float(env.max())
+    h = np.linalg.norm(model.receptance(2 * np.pi * model.frequency_grid()), 2, axis=(1, 2)).max()
+    a = 1.0 / (np.linalg.norm(process.mean_directional(), 2) * h)
+    return a, a
+
+
+class _Depths:
+    """The depth grid: fixed, or grown by doubling up to the cap."""
+
+    def __init__(self, depths: np.ndarray, cap: float, growth: int):
+        if depths[0] <= 0:
+            raise ValueError("depths must be positive")
+        self.values, self.cap, self.growth = depths, float(cap), growth
+
+    def extend(self) -> bool:
+        top = self.values[-1]
+        if self.growth <= 0 or top >= self.cap * (1 - 1e-12):
+            return False
+        new = np.linspace(top, min(2 * top, self.cap), self.growth + 1)[1:]
+        self.values = np.concatenate([self.values, new])
+        return True
+
+
+def _march(prob: _Grouped, grid: _Depths, S: int) -> tuple[np.ndarray, np.ndarray]:
+    """rho [S, D] (NaN where not evaluated) and the index of the first unstable depth (-1: none)."""
+    rho = np.full((S, len(grid.values)), np.nan)
+    first = np.full(S, -1)
+    pending = np.ones(S, bool)
+    extra = np.zeros(S, bool)
+    j = 0
+    while pending.any() or extra.any():
+        if j >= len(grid.values):
+            if not pending.any() or not grid.extend():
+                break
+            rho = np.concatenate([rho, np.full((S, len(grid.values) - rho.shape[1]), np.nan)], axis=1)
+        idx = np.flatnonzero(pending | extra)
+        rho[idx, j] = prob.spectral_radius(idx, np.full(len(idx), grid.values[j]))
+        extra[:] = False
+        hit = pending & (rho[:, j] >= 1.0)
+        first[hit] = j
+        pending &= ~hit
+        extra[hit] = j + 1 < len(grid.values)
+        j += 1
+    return rho, first
 
 
 def _brackets(prob, depths, rho, rho0, first, peak_check):
@@ -114,10 +169,10 @@ def _brackets(prob, depths, rho, rho0, first, peak_check):
     ext = np.concatenate([rho0[:, None], rho], axis=1)  # ext[:, j + 1] = rho at depths[j]
     dext = np.concatenate([[0.0], depths])
     for s in range(S):
-        j_first = first[s] if first[s] >= 0 else D
-        for j in range(min(j_first, D - 1)):
+        last = first[s] if first[s] >= 0 else int(np.count_nonzero(np.isfinite(rho[s])))
+        for j in range(min(last, D - 1)):
             r = ext[s, j + 1]
-            if r < peak_check or r < ext[s, j] or r < ext[s, j + 2]:
+            if r < peak_check or r < ext[s, j] or not r >= ext[s, j + 2]:
                 continue
             res = minimize_scalar(lambda a: -prob.spectral_radius(np.array([s]), np.array([a]))[0],
                                   bounds=(dext[j], dext[j + 2]), method="bounded",
@@ -134,80 +189,161 @@ def _brackets(prob, depths, rho, rho0, first, peak_check):
     return lo, hi, f_lo, f_hi
 
 
-def _illinois(prob, s_idx, lo, hi, f_lo, f_hi, rtol: float, max_iter: int = 40):
-    """Vectorised Illinois iteration for rho(a) = 1 with f = rho - 1, f_lo < 0 <= f_hi."""
-    lo, hi, f_lo, f_hi = (np.array(v, float) for v in (lo, hi, f_lo, f_hi))
-    side = np.zeros(len(lo), int)
-    active = np.ones(len(lo), bool)
-    for _ in range(max_iter):
-        active &= (hi - lo) > rtol * hi
-        if not active.any():
-            break
-        a = np.flatnonzero(active)
-        x = hi[a] - f_hi[a] * (hi[a] - lo[a]) / (f_hi[a] - f_lo[a])
-        x = np.clip(x, lo[a] + 1e-3 * (hi[a] - lo[a]), hi[a] - 1e-3 * (hi[a] - lo[a]))
-        fx = prob.spectral_radius(s_idx[a], x) - 1.0
+def _itp(prob, s_idx, lo, hi, f_lo, f_hi, rtol: float, n0: int = 1):
+    """Root of f = rho - 1 in each bracket (f_lo < 0 <= f_hi) by the ITP method (Oliveira and
+    Takahashi, ACM TOMS 47 (2020) 5): regula falsi, truncated and projected so that no bracket needs
+    more than n0 steps beyond bisection's.  rho is the largest of several multipliers' moduli, so it
+    has kinks, and a nearly undamped mode can hold it a hair below 1 up to where the chatter mode
+    overtakes it, which stalls a plain regula falsi.  Returns the roots and d rho / d a of the last
+    brackets."""
+    a, b, fa, fb = (np.array(v, float) for v in (lo, hi, f_lo, f_hi))
+    eps = 0.5 * rtol * b
+    n_max = np.ceil(np.log2(np.maximum((b - a) / (2 * eps), 1.0))).astype(int) + n0
+    k1 = 0.2 / np.maximum(b - a, 1e-300)
+    active = (b - a) > 2 * eps
+    j = 0
+    while active.any():
+        i = np.flatnonzero(active)
+        w = b[i] - a[i]
+        x_half = 0.5 * (a[i] + b[i])
+        r = np.maximum(eps[i] * 2.0 ** (n_max[i] - j) - 0.5 * w, 0.0)
+        delta = k1[i] * w * w
+        x_f = (b[i] * fa[i] - a[i] * fb[i]) / (fa[i] - fb[i])
+        sigma = np.sign(x_half - x_f)
+        x_t = np.where(delta <= np.abs(x_half - x_f), x_f + sigma * delta, x_half)
+        x = np.where(np.abs(x_t - x_half) <= r, x_t, x_half - sigma * r)
+        fx = prob.spectral_radius(s_idx[i], x) - 1.0
         up = fx >= 0
-        i_up, i_dn = a[up], a[~up]
-        hi[i_up], f_hi[i_up] = x[up], fx[up]
-        f_lo[i_up[side[i_up] == 1]] *= 0.5
-        side[i_up] = 1
-        lo[i_dn], f_lo[i_dn] = x[~up], fx[~up]
-        f_hi[i_dn[side[i_dn] == -1]] *= 0.5
-        side[i_dn] = -1
-    return 0.5 * (lo + hi)
+        b[i[up]], fb[i[up]] = x[up], fx[up]
+        a[i[~up]], fa[i[~up]] = x[~up], fx[~up]
+        active &= (b - a) > 2 * eps
+        j += 1
+    return 0.5 * (a + b), (fb - fa) / np.maximum(b - a, 1e-300)
+
+
+def _solve(process, models, speeds, m_s, grid: _Depths, order, rtol, peak_check) -> dict:
+    """Boundary, kind, frequency and lobe number at every speed for the step counts ``m_s``."""
+    prob = _Grouped(process, models, speeds, m_s, order)
+    S = len(speeds)
+    rho0 = prob.spectral_radius(np.arange(S), np.full(S, 1e-3 * grid.values[0]))
+    rho, first = _march(prob, grid, S)
+    depths = grid.values[:rho.shape[1]]
+    lo, hi, f_lo, f_hi = _brackets(prob, depths, rho, rho0, first, peak_check)
+    out = {"limit": np.full(S, np.nan), "freq": np.full(S, np.nan), "kind": np.full(S, "", dtype="<U4"),
+           "lobe": np.full(S, -1), "slope": np.full(S, np.nan), "rho": rho, "depths": depths}
+    hit = np.flatnonzero(np.isfinite(hi))
+    if len(hit):
+        out["limit"][hit], out["slope"][hit] = _itp(prob, hit, lo[hit], hi[hit], f_lo[hit], f_hi[hit], rtol)
+        for s in hit:
+            cm = prob.critical(int(s), float(out["limit"][s]))
+            out["freq"][s], out["kind"][s], out["lobe"][s] = cm.chatter_frequency_hz, cm.kind, cm.lobe
+    return out
+
+
+def _steps_needed(process, models, speeds, m_s, res, order, points_per_wave, error_tol) -> np.ndarray:
+    """Steps each speed needs (0: its m will do): a chatter wave resolved by fewer than half the
+    points per wave, or an estimated depth error above ``error_tol``.  The estimate: rho at the limit
+    with about half the steps, rho_h; second-order convergence puts the error of rho at m at
+    (rho_h - 1) / (q^2 - 1), q = m / m_h, and that of the depth at it over a d rho / d a."""
+    S = len(speeds)
+    need = np.zeros(S, int)
+    hit = np.flatnonzero(np.isfinite(res["limit"]) & np.isfinite(res["slope"]) & (res["slope"] > 0))
+    waves = points_per_wave * res["freq"] * process.tooth_period_s(speeds)
+    few = np.isfinite(waves) & (m_s < 0.5 * waves)
+    need[few] = np.ceil(waves[few])
+    if len(hit) and np.isfinite(error_tol):
+        m_h = _LADDER[np.maximum(np.searchsorted(_LADDER, m_s[hit] // 2), 0)]
+        m_h = np.where(m_h >= m_s[hit], m_s[hit] // 2, m_h)
+        prob = _Grouped(process, models if len(models) == 1 else [models[i] for i in hit], speeds[hit],
+                        np.maximum(m_h, 4), order)
+        rho_h = prob.spectral_radius(np.arange(len(hit)), res["limit"][hit])
+        q2 = (m_s[hit] / np.maximum(m_h, 4)) ** 2
+        err = np.abs((rho_h - 1.0) / (q2 - 1.0) / (res["slope"][hit] * res["limit"][hit]))
+        bad = err > error_tol
+        need[hit[bad]] = np.maximum(need[hit[bad]], np.ceil(m_s[hit[bad]] * np.sqrt(err[bad] / (0.4 * error_tol))))
+        res["error"] = np.full(S, np.nan)
+        res["error"][hit] = err
+    return need
+
+
+def _merge_rows(base: dict, redo: dict, sel: np.ndarray) -> None:
+    for key in ("limit", "freq", "kind", "lobe", "slope"):
+        base[key][sel] = redo[key]
+    D = max(base["rho"].shape[1], redo["rho"].shape[1])
+    for d in (base, redo):
+        if d["rho"].shape[1] < D:
+            d["rho"] = np.concatenate([d["rho"], np.full((len(d["rho"]), D - d["rho"].shape[1]), np.nan)], axis=1)
+    base["rho"][sel] = redo["rho"]
+    if len(redo["depths"]) > len(base["depths"]):
+        base["depths"] = redo["depths"]
 
 
 def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray, *,
                               steps: int | None = None, order: int = 1, points_per_wave: float = 30.0,
-                              min_steps: int = 30, max_steps: int = 400, depths_m: np.ndarray | None = None,
-                              depth_max_m: float | None = None, n_depths: int = 40,
-                              rtol: float = 1e-4, peak_check: float = 0.9,
-                              fit_options: dict | None = None,
-                              **_ignored) -> LobeDiagram:
-    """Stability map and limit depth by semi-discretization (``steps`` per tooth period)."""
+                              min_steps: int = 30, max_steps: int = 400, steps_in_cut: int = STEPS_IN_CUT,
+                              depths_m: np.ndarray | None = None, depth_max_m: float | None = None,
+                              n_depths: int = 40, rtol: float = 1e-4, peak_check: float = 0.9,
+                              error_tol: float = ERROR_TOL, reduce_model: bool = True,
+                              fit_options: dict | None = None, **_ignored) -> LobeDiagram:
+    """Limit depth by semi-discretization (module docstring), with the stability map it evaluated.
+
+    ``error_tol``: the estimated relative depth error above which a speed is solved again with more
+    steps (``np.inf``: no error control, the plain discretisation); ``reduce_model``: replace a large
+    model by its dominant modes and the rest's compliance (:mod:`~spindlesim.chatter.sd_model`)."""
+    from .zero_order import zero_order_lobes  # depth range and the model-reduction check
+
     speeds = np.asarray(speeds_rpm, float)
     tools, per_speed = tool_at_speeds(tool, speeds)
     used = tools if per_speed else tools[:1]
     models = [as_state_space(t, **(fit_options or {})) for t in used]
-    m_s = (np.full(len(speeds), int(steps)) if steps is not None
-           else _auto_steps(process, models, speeds, points_per_wave, min_steps, max_steps))
-    prob = _Grouped(process, models, speeds, m_s, order)
+    notes = []
+
+    def zero_order(t):
+        return zero_order_lobes(process, t, speeds)
+
+    sd_models, model_note = models_for_sd(models, process.mean_directional()) if reduce_model else (models, "")
+    if model_note:
+        notes.append(model_note)
     if depths_m is not None:
-        depths = np.sort(np.asarray(depths_m, float))
+        grid = _Depths(np.sort(np.asarray(depths_m, float)), float(np.max(depths_m)), 0)
     elif depth_max_m is not None:
-        depths = np.linspace(depth_max_m / n_depths, depth_max_m, n_depths)
+        grid = _Depths(np.linspace(depth_max_m / n_depths, depth_max_m, n_depths), depth_max_m, 0)
     else:
-        depths = _default_depths(process, models, speeds, n_depths)
-    if depths[0] <= 0:
-        raise ValueError("depths must be positive")
-    S, D = len(speeds), len(depths)
-    s_grid = np.repeat(np.arange(S), D)
-    rho = prob.spectral_radius(s_grid, np.tile(depths, S)).reshape(S, D)
-    rho0 = prob.spectral_radius(np.arange(S), np.full(S, 1e-3 * depths[0]))
-    first, pockets = boundary_from_map(rho)
-    lo, hi, f_lo, f_hi = _brackets(prob, depths, rho, rho0, first, peak_check)
-    limit = np.full(S, np.nan)
-    freq = np.full(S, np.nan)
-    kind = np.full(S, "", dtype="<U4")
-    lobe_no = np.full(S, -1)
-    hit = np.flatnonzero(np.isfinite(hi))
-    if len(hit):
-        limit[hit] = _illinois(prob, hit, lo[hit], hi[hit], f_lo[hit], f_hi[hit], rtol)
-        for s in hit:
-            cm = prob.critical(int(s), float(limit[s]))
-            freq[s], kind[s], lobe_no[s] = cm.chatter_frequency_hz, cm.kind, cm.lobe
+        a_min, a_max = _zoa_scale(process, models[0], zero_order(models if per_speed else models[0]))
+        top = 1.25 * min(a_max, 3.0 * a_min)
+        grid = _Depths(np.linspace(top / n_depths, top, n_depths), CAP_FACTOR * a_min, max(2, n_depths // 2))
+    fixed = steps is not None
+    m_s = (np.full(len(speeds), int(steps)) if fixed
+           else _auto_steps(process, sd_models, speeds, points_per_wave, min_steps, max_steps, steps_in_cut))
+    if fixed and steps * process.cut_fraction < steps_in_cut:
+        log.warning("%d steps per tooth period put %.1f steps in the cut (fewer than %d)", steps,
+                    steps * process.cut_fraction, steps_in_cut)
+    res = _solve(process, sd_models, speeds, m_s, grid, order, rtol, peak_check)
+    if not fixed:  # too few points on the chatter wave, or too large an error estimate: again, finer
+        need = _steps_needed(process, sd_models, speeds, m_s, res, order, points_per_wave, error_tol)
+        redo = np.flatnonzero(need > m_s)
+        if len(redo):
+            m_new = _round_steps(np.minimum(need[redo], np.maximum(4 * m_s[redo], max_steps)), HARD_MAX_STEPS,
+                                 m_s[redo])
+            log.info("%d speed(s) solved again with more steps per period", len(redo))
+            sub = sd_models if not per_speed else [sd_models[i] for i in redo]
+            again = _Depths(grid.values.copy(), grid.cap, 0)
+            _merge_rows(res, _solve(process, sub, speeds[redo], m_new, again, order, rtol, peak_check), redo)
+            m_s = m_s.copy()
+            m_s[redo] = m_new
+    limit, freq, kind, lobe_no = res["limit"], res["freq"], res["kind"], res["lobe"]
+    hit = np.flatnonzero(np.isfinite(limit))
     lobes = []
     for kd, k in sorted({(kind[s], lobe_no[s]) for s in hit}, key=lambda t: (t[0], -t[1])):
         sel = (kind == kd) & (lobe_no == k)
         lobes.append(LobeCurve(int(k), speeds, np.where(sel, limit, np.nan), np.where(sel, freq, np.nan), str(kd)))
-    notes = []
-    if len(hit) < S:
-        notes.append(f"{S - len(hit)} speed(s) stable over the whole depth range "
-                     f"(up to {depths[-1] * 1e3:.4g} mm): limit set to NaN")
-    if np.any(pockets):
-        notes.append(f"{int(np.sum(pockets > 0))} speed(s) regain stability above the first "
-                     "boundary within the map (islands); the limit is the first crossing")
-    smap = StabilityMap(speeds, depths, rho, m_s, order)
+    capped = ~np.isfinite(limit)
+    if capped.any():
+        notes.append(f"{int(capped.sum())} speed(s) stable up to the depth cap {grid.cap * 1e3:.4g} mm, the "
+                     f"largest depth searched (the limit is at least that; NaN in limit_depth_m): "
+                     f"{speed_runs(speeds[capped])}")
+    notes.append(f"steps per tooth period {m_s.min()}-{m_s.max()} (at least {steps_in_cut} in the cut "
+                 f"unless fixed; the cut is {100 * process.cut_fraction:.3g} % of the tooth period)")
+    smap = StabilityMap(speeds, res["depths"], res["rho"], m_s, order)
     return LobeDiagram(speeds, limit, freq, tuple(lobes), METHOD, process.describe(), kind, smap,
-                       per_speed, tuple(notes))
+                       per_speed, tuple(notes), capped=capped, depth_cap_m=grid.cap)

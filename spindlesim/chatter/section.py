@@ -31,9 +31,12 @@ Keys carry their units; :func:`build_chatter` converts to the SI dataclasses of 
         # files: [{path: tap_x.csv, direction: x}, {path: tap_y.csv, direction: y}]
 
 Optional: ``semi_discretization: {order, steps_per_period, points_per_wave, depth_points,
-depth_max_mm}`` and ``simulate: {points: [{speed_rpm, depth_mm}], tooth_periods,
+depth_max_mm}`` (``depth_max_mm``: the largest depth searched, the cap; default 20 x the smallest
+zero-order limit) and ``simulate: {points: [{speed_rpm, depth_mm}], tooth_periods,
 steps_per_period}`` (time-domain checks), ``feed_per_tooth_mm`` / ``feed_per_rev_mm`` (static
-chip of the simulation).  Relative FRF file paths are taken from the deck's directory.
+chip of the simulation).  Relative FRF file paths are taken from the deck's directory.  ``auto``:
+oriented FRF for turning, boring and grinding; zero order for milling only where the directional
+matrix is constant (a full slot with 4, 6, ... teeth), the semi-discretization otherwise.
 """
 
 from __future__ import annotations

@@ -48,28 +48,37 @@ __all__ = ["SdProblem", "CriticalMultiplier", "spectral_radius"]
 log = logging.getLogger(__name__)
 
 
-def _monodromy(P, R0, R1, Cr):
+def _monodromy(P, R0, R1, Cr, Yx=None, Yh=None):
     """Phi [E, N, N] from the step maps P [E, m, n, n], R0/R1 [E, m, n, r] and Cr [E, r, n].
 
     The rows of x_i as linear functions of z_0 are carried through the m steps (batched over
-    E); history slot s of z holds y_{-s-1}."""
+    E); history slot s of z holds y_{-s-1}.  With a feed-through the output recorded at step i is
+    y_i = Yx[:, i] x_i + Yh[:, i] y_{i-m} (Yx [E, m, r, n], Yh [E, m, r, r]) instead of Cr x_i."""
     E, m, n, _ = P.shape
     r = Cr.shape[1]
     N = n + r * m
     X = np.zeros((E, n, N))
     X[:, :, :n] = np.eye(n)
-    Ys = np.empty((E, m, r, N))
+    Ys = np.zeros((E, m, r, N))
+    c = N  # history columns below c (slots not reached yet) are zero in X: multiply the rest only
     for i in range(m):
-        Ys[:, i] = Cr @ X
-        Xn = P[:, i] @ X
+        Yi = Cr if Yx is None else Yx[:, i]
+        Ys[:, i, :, :n] = Yi @ X[:, :, :n]
+        Ys[:, i, :, c:] = Yi @ X[:, :, c:]
+        if Yx is not None:
+            h = n + r * (m - i - 1)  # y_{i-m}
+            Ys[:, i, :, h:h + r] += Yh[:, i]
+        X[:, :, :n] = P[:, i] @ X[:, :, :n]
+        X[:, :, c:] = P[:, i] @ X[:, :, c:]
         s0 = m - i - 1  # y_{i-m}
-        Xn[:, :, n + r * s0:n + r * (s0 + 1)] += R0[:, i]
+        X[:, :, n + r * s0:n + r * (s0 + 1)] += R0[:, i]
+        c = min(c, n + r * s0)
         if i < m - 1:  # y_{i-m+1} still in the history
             s1 = m - i - 2
-            Xn[:, :, n + r * s1:n + r * (s1 + 1)] += R1[:, i]
+            X[:, :, n + r * s1:n + r * (s1 + 1)] += R1[:, i]
+            c = min(c, n + r * s1)
         else:  # y_{i-m+1} = y_0 = Cr x_0
-            Xn += R1[:, i] @ Ys[:, 0]
-        X = Xn
+            X += R1[:, i] @ Ys[:, 0]
     out = np.empty((E, N, N))
     out[:, :n] = X
     out[:, n:] = Ys[:, ::-1].reshape(E, m * r, N)  # new slot s holds y_{m-1-s}
@@ -95,6 +104,20 @@ def _spectral_radii(Phi: np.ndarray) -> np.ndarray:
     return out
 
 
+def _dominant_eigenpair(Phi: np.ndarray) -> tuple[complex, np.ndarray]:
+    """Eigenvalue of largest modulus and its eigenvector (Arnoldi above 64 states, as for rho)."""
+    if len(Phi) > 64:
+        try:
+            ev, V = eigs(Phi, k=6, which="LM", tol=1e-12, v0=np.ones(len(Phi)), maxiter=50 * len(Phi))
+            j = int(np.argmax(np.abs(ev)))
+            return complex(ev[j]), V[:, j]
+        except ArpackNoConvergence:
+            pass
+    mu_all, V = np.linalg.eig(Phi)
+    j = int(np.argmax(np.abs(mu_all)))
+    return complex(mu_all[j]), V[:, j]
+
+
 @dataclass(frozen=True)
 class CriticalMultiplier:
     """Largest characteristic multiplier at one (speed, depth) and what it means."""
@@ -109,7 +132,10 @@ class CriticalMultiplier:
 class SdProblem:
     """Semi-discretized stability problem of one process over a set of speeds.
 
-    ``models[s]`` is the tool-point model at speed ``speeds_rpm[s]`` (all of the same order).
+    ``models[s]`` is the tool-point model at speed ``speeds_rpm[s]`` (all of the same order).  A
+    model with a feed-through ``D`` (y = C x + D F, :class:`~spindlesim.chatter.sd_model.SdModel`)
+    has the force F = K (y - y_tau) solved for first: F = K~ (C x - y_tau), K~ = (I - K D)^-1 K, and
+    records y = C x + D F in the history.
     """
 
     def __init__(self, process, models: list[ToolPointModel], speeds_rpm: np.ndarray,
@@ -124,13 +150,15 @@ class SdProblem:
         n = models[0].A.shape[0]
         if any(mdl.A.shape[0] != n for mdl in models):
             raise ValueError("all tool models must have the same number of states")
+        feed = [np.asarray(getattr(mdl, "D", np.zeros((2, 2))), float) for mdl in models]
         rows = np.zeros(2, bool)
-        for mdl in models:
-            rows |= np.any(mdl.C != 0.0, axis=1)
+        for mdl, d in zip(models, feed):
+            rows |= np.any(mdl.C != 0.0, axis=1) | np.any(d != 0.0, axis=1)
         self.U = np.eye(2)[:, rows]  # [2, r] outputs kept in the history
         self.A = np.stack([mdl.A for mdl in models])
         self.B = np.stack([mdl.B for mdl in models])
         self.Cr = np.stack([mdl.C[rows] for mdl in models])
+        self.D = np.stack(feed) if any(np.any(d) for d in feed) else None
         self.shared = len(models) == 1
         self._K: dict[float, np.ndarray] = {}
 
@@ -153,6 +181,17 @@ class SdProblem:
         m, n, r = self.steps, self.A.shape[1], self.U.shape[1]
         A, B, Cr = self._model(s_idx)
         K = np.stack([self._directional(d) for d in depth])  # [E, m, 2, 2]
+        Yx = Yh = None
+        if self.D is not None:  # feed-through: F = K~ (C x - y_tau), y = C x + D F
+            Dm = self.D[np.zeros_like(s_idx) if self.shared else s_idx][:, None]  # [E, 1, 2, 2]
+            M = np.eye(2) - K @ Dm  # K~ = M^-1 K, the 2 x 2 inverse written out
+            det = M[..., 0, 0] * M[..., 1, 1] - M[..., 0, 1] * M[..., 1, 0]
+            inv = np.stack([np.stack([M[..., 1, 1], -M[..., 0, 1]], -1),
+                            np.stack([-M[..., 1, 0], M[..., 0, 0]], -1)], -2) / det[..., None, None]
+            K = inv @ K
+            DK = self.U.T @ (Dm @ K) @ self.U  # [E, m, r, r]
+            Yx = (np.eye(r) + DK) @ Cr[:, None]
+            Yh = -DK
         dt = (self.tau[s_idx] / m)[:, None, None, None]
         BK = np.einsum("eak,eikl->eial", B, K)  # [E, m, n, 2]
         D = -BK @ self.U  # [E, m, n, r]
@@ -163,11 +202,18 @@ class SdProblem:
         size = n + (2 if self.order == 1 else 1) * r
         free = ~np.any(K != 0.0, axis=(2, 3))  # [E, m]
         cut = ~free
+        # the blocks D dt / g and c I are scaled so that the 1-norm follows A_i dt (a low Pade degree, no
+        # squaring); the exponential's (1, 2) block is linear in the (1, 2) block of Z, the (1, 3) block in
+        # the product of the (1, 2) and (2, 3) blocks, so Phi0 D = g X12 and Phi1 D = g X13 / c
         Z = np.zeros((E, m, size, size))
         Z[..., :n, :n] = Ai * dt
-        Z[..., :n, n:n + r] = D * dt
+        Dd = D * dt
+        g = np.maximum(np.abs(Dd).sum(axis=-2).max(axis=-1) / np.maximum(np.abs(Z[..., :n, :n]).sum(axis=-2).max(
+            axis=-1), 1e-300), 1.0)[..., None, None]
+        Z[..., :n, n:n + r] = Dd / g
+        c = 2.0 ** -5
         if self.order == 1:
-            Z[..., n:n + r, n + r:] = np.eye(r)
+            Z[..., n:n + r, n + r:] = c * np.eye(r)
         X = np.empty_like(Z)
         X[cut] = expm_batch(Z[cut])
         if free.any():
@@ -175,20 +221,21 @@ class SdProblem:
             first = free[e_free].argmax(axis=1)
             Xf = expm_batch(Z[e_free, first])
             X[free] = np.repeat(Xf, free[e_free].sum(axis=1), axis=0)
-        P, Phi0D = X[..., :n, :n], X[..., :n, n:n + r]
+        P, Phi0D = X[..., :n, :n], g * X[..., :n, n:n + r]
         if self.order == 1:
-            Phi1D = X[..., :n, n + r:]
+            Phi1D = (g / c) * X[..., :n, n + r:]
             R0, R1 = Phi0D - Phi1D, Phi1D
         else:
             R0 = R1 = 0.5 * Phi0D
-        return _monodromy(P, R0, R1, Cr)
+        return _monodromy(P, R0, R1, Cr, Yx, Yh)
 
     def spectral_radius(self, s_idx, depth) -> np.ndarray:
         """Spectral radius at (speed index, depth) pairs, built in batches of bounded memory."""
         s_idx = np.atleast_1d(np.asarray(s_idx, np.int64))
         depth = np.broadcast_to(np.asarray(depth, float), s_idx.shape)
         N = self.A.shape[1] + self.U.shape[1] * self.steps
-        chunk = int(np.clip(2e7 // (N * N), 1, 128))
+        m, size = self.steps, self.A.shape[1] + 2 * self.U.shape[1]
+        chunk = int(np.clip(2e7 // max(N * N, 6 * m * size * size, m * self.U.shape[1] * N), 1, 128))
         out = np.empty(len(s_idx))
         for a in range(0, len(s_idx), chunk):
             out[a:a + chunk] = _spectral_radii(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]))
@@ -197,9 +244,7 @@ class SdProblem:
     def critical(self, s: int, depth: float) -> CriticalMultiplier:
         """Critical multiplier, boundary kind and dominant chatter frequency at one point."""
         Phi = self.monodromy(np.array([s]), np.array([depth]))[0]
-        mu_all, V = np.linalg.eig(Phi)
-        j = int(np.argmax(np.abs(mu_all)))
-        mu, v = complex(mu_all[j]), V[:, j]
+        mu, v = _dominant_eigenpair(Phi)
         if mu.imag < 0:  # the conjugate pair member with arg in [0, pi]
             mu, v = mu.conjugate(), v.conj()
         rho = abs(mu)

@@ -40,7 +40,7 @@ import numba
 import numpy as np
 
 from ._expm import expm_batch
-from .results import SimulationResult
+from .results import DECAYED, DIED_OUT, STABLE_GROWTH, SimulationResult
 from .state_space import Tool, as_state_space
 
 __all__ = ["simulate"]
@@ -173,7 +173,7 @@ def simulate(process, tool: Tool, speed_rpm: float, depth_m: float, *, tooth_per
     xdot = np.gradient(Y, dt, axis=0)[::m]
     d = np.linalg.norm(np.diff(poincare, axis=0), axis=1)
     growth, decay = _growth(d)
-    stable = bool(decay < 1e-6 or (growth < 0.999 and decay < 0.1))
+    stable = bool(decay < DIED_OUT or (growth < STABLE_GROWTH and decay < DECAYED))
     # spectrum of the last half, a whole number of periods
     p_half = tooth_periods // 2
     seg = Y[-p_half * m - 1:-1]

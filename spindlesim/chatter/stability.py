@@ -1,17 +1,22 @@
 """Driver: one entry point for every process and method.
 
 The process resolves the method (``auto`` included: oriented FRF for turning, boring and
-grinding; zero-order for milling, semi-discretization below 30 % radial immersion) and the
-method is looked up in a table, so the driver never asks which method or process it has.
+grinding; for milling zero order where the directional matrix is constant over the tooth period
+and its average exact, semi-discretization everywhere else) and the method is looked up in a
+table, so the driver never asks which method or process it has.  The diagram carries the
+process's word on the choice (``selection``), and the result the stability pockets found in it.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
+
+import logging
 
 import numpy as np
 
+from .pockets import Pocket, best_pocket, stability_pockets
 from .results import LobeDiagram, SimulationResult
 from .sd_lobes import semi_discretization_lobes
 from .section import ChatterSpec
@@ -21,6 +26,8 @@ from .turning import turning_lobes
 from .zero_order import zero_order_lobes
 
 __all__ = ["METHODS", "stability_lobes", "ChatterResult", "run_chatter"]
+
+log = logging.getLogger(__name__)
 
 METHODS: dict[str, Callable[..., LobeDiagram]] = {
     "oriented_frf": turning_lobes,
@@ -37,13 +44,25 @@ def stability_lobes(process, tool: ToolSource, speeds_rpm, method: str = "auto",
     method (e.g. ``steps``, ``order``, ``n_depths``, ``depth_max_m`` for the semi-discretization;
     the others ignore what they do not use).
     """
-    return METHODS[process.method_for(method)](process, tool, np.asarray(speeds_rpm, float), **options)
+    diagram = METHODS[process.method_for(method)](process, tool, np.asarray(speeds_rpm, float), **options)
+    note = process.method_note(method)
+    if "CAUTION" in note:
+        log.warning("%s", note)
+    return replace(diagram, selection=note)
 
 
 @dataclass(frozen=True, eq=False)
 class ChatterResult:
+    """The lobe diagram, its stability pockets (deepest first) and the time-domain checks."""
+
     diagram: LobeDiagram
     simulations: tuple[SimulationResult, ...]
+    pockets: tuple[Pocket, ...] = ()
+
+    @property
+    def recommendation(self) -> Pocket | None:
+        """The pocket to cut in (:func:`~spindlesim.chatter.pockets.best_pocket`), if any."""
+        return best_pocket(self.pockets)
 
 
 def _tool_at(tool: ToolSource, speeds: np.ndarray, speed: float) -> Tool:
@@ -59,15 +78,14 @@ def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
     """Lobe diagram and the requested time-domain checks of a built ``chatter:`` section.
 
     ``tool`` replaces ``spec.tool`` (needed when the deck says ``frf: rotor``);
-    ``simulation_tool`` (e.g. a truncated rotor model) serves the time-domain methods: the
-    semi-discretization and the simulations.
+    ``simulation_tool`` (e.g. a truncated rotor model) serves the time-domain simulations (the
+    semi-discretization reduces a large model itself, checked on the zero-order lobes).
     """
     src = tool if tool is not None else spec.tool
     if src is None:
         raise ValueError("frf: rotor needs the rotor's tool-point model (pass tool=...)")
     timed = simulation_tool if simulation_tool is not None else src
-    lobes_tool = timed if spec.resolved_method == "semi_discretization" else src
-    diagram = stability_lobes(spec.process, lobes_tool, spec.speeds_rpm, spec.method, **dict(spec.method_options))
+    diagram = stability_lobes(spec.process, src, spec.speeds_rpm, spec.method, **dict(spec.method_options))
     sims = tuple(simulate(spec.process, _tool_at(timed, spec.speeds_rpm, s), s, a, **dict(spec.simulation_options))
                  for s, a in spec.simulation_points)
-    return ChatterResult(diagram, sims)
+    return ChatterResult(diagram, sims, stability_pockets(diagram))

@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 
+from ..chatter.pockets import MIN_GRID_SPEEDS, MIN_TOLERANCE, POCKET_LEVEL
+from ..chatter.results import speed_runs
 from .hdf5 import Data, RunInfo, labels, write_h5
 from .rotor_writers import tool_point_frf
 
@@ -66,11 +68,51 @@ def _simulation(g: str, s) -> dict[str, Any]:
             **labels(g, "dof", ("x", "y")), **labels(g, "load", ("Fx", "Fy"))}
 
 
+def _methods(g: str, dg) -> dict[str, Any]:
+    return {f"{g}/method": Data(np.asarray(dg.method_per_speed, dtype=object), "1", ("speed_rpm",),
+                                "the method that produced the limit at each speed"),
+            f"{g}/capped": Data(np.asarray(dg.capped, np.int8), "1", ("speed_rpm",),
+                                "1: stable up to the depth cap (the largest depth searched); the limit is NaN "
+                                "and at least the cap")}
+
+
+def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
+    """Datasets of every pocket and the attributes of the recommended one (the summary reads them)."""
+    pk = result.pockets
+    if not pk:
+        return {}, {"recommendation": "none: no stability pocket inside the speed range"}
+    g, d = "/chatter/pockets", ("pocket",)
+    data = {f"{g}/peak_speed_rpm": (np.array([p.peak_speed_rpm for p in pk]), "rpm", d),
+            f"{g}/peak_depth_m": Data(np.array([p.peak_depth_m for p in pk]), "m", d,
+                                      "largest limit depth of the pocket (at least this where capped)"),
+            f"{g}/depth_m": Data(np.array([p.depth_m for p in pk]), "m", d,
+                                 f"the depth the speed interval keeps: {POCKET_LEVEL:.0%} of the peak, less where "
+                                 f"needed for the interval to span +-{MIN_TOLERANCE:.0%} of the speed"),
+            f"{g}/speed_min_rpm": (np.array([p.speed_min_rpm for p in pk]), "rpm", d),
+            f"{g}/speed_max_rpm": (np.array([p.speed_max_rpm for p in pk]), "rpm", d),
+            f"{g}/grid_speeds": (np.array([p.grid_speeds for p in pk]), "1", d),
+            f"{g}/capped": (np.array([p.capped for p in pk], np.int8), "1", d)}
+    r = result.recommendation
+    attrs = {"recommended_speed_rpm": r.speed_rpm, "recommended_depth_m": r.depth_m,
+             "recommended_speed_tolerance_rpm": r.tolerance_rpm, "pocket_speed_min_rpm": r.speed_min_rpm,
+             "pocket_speed_max_rpm": r.speed_max_rpm, "pocket_peak_depth_m": r.peak_depth_m,
+             "pocket_peak_speed_rpm": r.peak_speed_rpm, "pocket_level": r.level, "pocket_capped": r.capped,
+             "pocket_grid_speeds": r.grid_speeds,
+             "recommendation": (f"the middle of the deepest stability pocket resolved by at least {MIN_GRID_SPEEDS} "
+                                f"grid speeds (else the deepest); over the speed interval the limit stays at or above "
+                                f"the depth, {POCKET_LEVEL:.0%} of the pocket's peak or less where needed for the "
+                                f"interval to span +-{MIN_TOLERANCE:.0%} of the speed")}
+    return data, attrs
+
+
 def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_tool, info: dict[str, Any]) -> Path:
     dg = result.diagram
     data: dict[str, Any] = _limits("/chatter", dg.speed_rpm, dg.limit_depth_m, dg.chatter_frequency_hz)
     data["/chatter/boundary_kind"] = Data(np.asarray(dg.boundary_kind, dtype=object), "1", ("speed_rpm",),
                                           "kind of the critical lobe (hopf, flip; empty: none)")
+    data.update(_methods("/chatter", dg))
+    pocket_data, pocket_attrs = _pockets(result)
+    data.update(pocket_data)
     for c in dg.lobes:
         data.update(_limits(f"/chatter/lobes/{c.kind}_{c.lobe}", c.speed_rpm, c.limit_depth_m, c.chatter_frequency_hz))
     shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
@@ -80,34 +122,42 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
     if at_deck is not None:
         data.update(_limits("/chatter/at_deck_speed", at_deck.speed_rpm, at_deck.limit_depth_m,
                             at_deck.chatter_frequency_hz))
+        data.update(_methods("/chatter/at_deck_speed", at_deck))
     sm = dg.stability_map
     if sm is not None:
         g = "/chatter/stability_map"
         data.update({f"{g}/speed_rpm": (sm.speed_rpm, "rpm", ("speed_rpm",)),
                      f"{g}/depth_m": (sm.depth_m, "m", ("depth_m",)),
                      f"{g}/spectral_radius": Data(sm.spectral_radius, "1", ("speed_rpm", "depth_m"),
-                                                  "of the monodromy matrix (< 1 stable)"),
+                                                  "of the monodromy matrix (< 1 stable); NaN where not evaluated "
+                                                  "(above the depth following the first crossing)", fill_nan=True),
                      f"{g}/steps_per_period": (sm.steps_per_period, "1", ("speed_rpm",))})
     for k, s in enumerate(result.simulations):
         data.update(_simulation(f"/chatter/simulation/{k + 1}", s))
     attrs: dict[str, dict[str, Any]] = {"/chatter": {
         "operation": spec.process.operation if hasattr(spec.process, "operation") else dg.process,
-        "process": dg.process, "method": dg.method, "frf_source": info["frf_source"],
-        "frf_at_each_speed": bool(info.get("frf_at_each_speed", False)),
-        "notes": "; ".join(dg.notes)}}
+        "process": dg.process, "method": dg.method, "method_selection": dg.selection,
+        "frf_source": info["frf_source"], "frf_at_each_speed": bool(info.get("frf_at_each_speed", False)),
+        "capped_speeds": int(np.count_nonzero(dg.capped)), "notes": "; ".join(dg.notes), **pocket_attrs}}
+    if np.isfinite(dg.depth_cap_m):
+        attrs["/chatter"]["depth_cap_m"] = dg.depth_cap_m
+    if np.any(dg.capped):
+        attrs["/chatter"]["capped_speeds_rpm"] = speed_runs(dg.speed_rpm[np.asarray(dg.capped, bool)])
     for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
         if key in info:
             attrs["/chatter"][{"node": "tool_point_node"}.get(key, key)] = info[key]
     if np.any(np.isfinite(dg.limit_depth_m)):
         s_min, a_min = dg.minimum
         attrs["/chatter"].update(minimum_limit_depth_m=a_min, minimum_at_speed_rpm=s_min)
+    if at_deck is not None:
+        attrs["/chatter/at_deck_speed"] = {"method": at_deck.method, "method_selection": at_deck.selection}
     attrs["/chatter/frf"] = {"layout": "[frequency, output (x, y), input (x, y)]"}
     if info.get("deck_speed_rpm") is not None:
         attrs["/chatter/frf"]["speed_rpm"] = info["deck_speed_rpm"]
     for k, s in enumerate(result.simulations):
         a = {"speed_rpm": s.speed_rpm, "depth_m": s.depth_m, "stable": s.stable,
              "tooth_frequency_hz": s.tooth_frequency_hz, "growth_per_period": s.growth_per_period,
-             "fft_bin_hz": s.fft_bin_hz}
+             "fft_bin_hz": s.fft_bin_hz, "decay_ratio": s.decay_ratio, "verdict": s.verdict}
         if np.isfinite(s.chatter_frequency_hz):  # NaN when stable: the attribute is left out
             a["chatter_frequency_hz"] = s.chatter_frequency_hz
         attrs[f"/chatter/simulation/{k + 1}"] = a

@@ -155,16 +155,41 @@ def write_frf(path: Path, run: RunInfo, r: FrfResult, tool_point=None) -> Path:
     return write_h5(path, run, data, attrs)
 
 
+RIGID = "NaN in the rows and columns of a direction the model holds rigid (no receptance in it)"
+
+
+def dynamic_stiffness(H: np.ndarray) -> np.ndarray:
+    """Inverse of a 2 x 2 receptance [frequency, 2, 2] over its flexible directions.
+
+    A direction whose row and column of H are zero at every frequency (a modal table with modes
+    along x only, say) is rigid: its entries are NaN and the other direction's stiffness is
+    1 / H_dd.  A frequency where the flexible block is singular gets NaN too."""
+    H = np.asarray(H)
+    flex = np.flatnonzero(np.any(H != 0, axis=(0, 2)) | np.any(H != 0, axis=(0, 1)))
+    Z = np.full(H.shape, np.nan, dtype=np.result_type(H.dtype, float))
+    sub = H[:, flex][:, :, flex]
+    with np.errstate(all="ignore"):
+        if len(flex) == 2:
+            det = sub[:, 0, 0] * sub[:, 1, 1] - sub[:, 0, 1] * sub[:, 1, 0]
+            inv = np.stack([np.stack([sub[:, 1, 1], -sub[:, 0, 1]], -1),
+                            np.stack([-sub[:, 1, 0], sub[:, 0, 0]], -1)], -2) / det[:, None, None]
+        else:
+            inv = 1.0 / sub
+    inv = np.where(np.isfinite(inv), inv, np.nan)
+    Z[np.ix_(np.arange(len(H)), flex, flex)] = inv
+    return Z
+
+
 def tool_point_frf(g: str, frequency_hz: np.ndarray, H: np.ndarray) -> dict:
     """A 2 x 2 receptance [frequency, output, input] and its inverse, with their coordinates."""
-    with np.errstate(all="ignore"):
-        Z = np.linalg.inv(H)
+    Z = dynamic_stiffness(H)
     return {
         f"{g}/frequency_hz": (np.asarray(frequency_hz, float), "Hz", ("frequency_hz",)),
         f"{g}/receptance_m_N": Data(H, "m/N", ("frequency_hz", "dof", "load"),
                                     "displacement along dof per unit force along load"),
         f"{g}/dynamic_stiffness_N_m": Data(Z, "N/m", ("frequency_hz", "load", "dof"),
-                                           "inverse of the receptance matrix at each frequency"),
+                                           "inverse of the receptance matrix at each frequency; " + RIGID,
+                                           fill_nan=True),
         **labels(g, "dof", XY), **labels(g, "load", FXY),
     }
 

@@ -433,21 +433,42 @@ def _poincare_words(p) -> str:
 def _chatter(f):
     g = f["chatter"]
     a = g.attrs
-    lines = [f"{a['process']}; {str(a['method']).replace('_', ' ')}, FRF from {a['frf_source']}"
-             + (" recomputed at every speed" if a.get("frf_at_each_speed") else "")]
+    lines = [f"{a['process']}; FRF from {a['frf_source']}" + (" recomputed at every speed" if a.get("frf_at_each_speed")
+                                                              else "")]
+    lines.append(f"  method: {a.get('method_selection') or str(a['method']).replace('_', ' ')}")
     data: dict[str, Any] = {"method": str(a["method"])}
+    if "method" in g:
+        used = [str(m) for m in g["method"].asstr()[:]]
+        counts = {m: used.count(m) for m in dict.fromkeys(used)}
+        if len(counts) > 1:
+            lines.append("  limits from " + ", ".join(f"{m.replace('_', ' ')} at {k} speed(s)" for m, k in counts.items()))
     if "minimum_limit_depth_m" in a:
         d, s = float(a["minimum_limit_depth_m"]), float(a["minimum_at_speed_rpm"])
-        sp, lim = g["speed_rpm"][:], g["limit_depth_m"][:]
-        k = int(np.nanargmax(lim))
-        lines.append(f"  minimum limit depth {d * 1e3:.3g} mm at {s:.0f} rpm; best in range {lim[k] * 1e3:.3g} mm "
-                     f"at {sp[k]:.0f} rpm")
-        data.update(minimum_limit_depth_m=d, minimum_at_speed_rpm=s, best_depth_m=float(lim[k]),
-                    best_speed_rpm=float(sp[k]))
+        lines.append(f"  minimum limit depth {d * 1e3:.3g} mm at {s:,.0f} rpm")
+        data.update(minimum_limit_depth_m=d, minimum_at_speed_rpm=s)
+    if int(a.get("capped_speeds", 0)):
+        lines.append(f"  {int(a['capped_speeds'])} speed(s) stable up to the depth cap "
+                     f"{float(a['depth_cap_m']) * 1e3:.3g} mm (the largest depth searched; no limit below it): "
+                     f"{a.get('capped_speeds_rpm', '')}")
+    if "recommended_speed_rpm" in a:
+        n, tol = float(a["recommended_speed_rpm"]), float(a["recommended_speed_tolerance_rpm"])
+        dep, peak = float(a["recommended_depth_m"]), float(a["pocket_peak_depth_m"])
+        lines.append(f"  recommended: {n:,.0f} rpm +- {tol:,.0f} rpm at up to {dep * 1e3:.3g} mm (stability pocket "
+                     f"{float(a['pocket_speed_min_rpm']):,.0f}-{float(a['pocket_speed_max_rpm']):,.0f} rpm, where the "
+                     f"limit stays at or above {float(a['pocket_level']):.0%} of the pocket's "
+                     f"{'>= ' if bool(a['pocket_capped']) else ''}{peak * 1e3:.3g} mm)")
+        if int(a.get("pocket_grid_speeds", 3)) < 3:
+            lines.append(f"    (no pocket holds 3 or more grid speeds; this one {int(a['pocket_grid_speeds'])}: refine the "
+                         "speed grid around it before relying on it)")
+        data.update(recommended_speed_rpm=n, recommended_depth_m=dep, recommended_speed_tolerance_rpm=tol)
+    elif "recommendation" in a:
+        lines.append(f"  recommended: {a['recommendation']}")
     for name in g.get("simulation", {}):
         s = g["simulation"][name].attrs
         state = "stable" if s["stable"] else f"CHATTER at {float(s['chatter_frequency_hz']):.0f} Hz"
-        lines.append(f"  simulation {float(s['speed_rpm']):g} rpm, {float(s['depth_m']) * 1e3:g} mm: {state}")
+        basis = str(s["verdict"]).partition(": ")[2] if "verdict" in s else ""
+        lines.append(f"  simulation {float(s['speed_rpm']):g} rpm, {float(s['depth_m']) * 1e3:g} mm: {state}"
+                     + (f" ({basis})" if basis else ""))
     return lines, data
 
 

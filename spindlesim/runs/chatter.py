@@ -43,8 +43,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         tool, deck_tool, info = _rotor_tools(d, spec, bool(opts.get("exact")), progress)
     else:
         tool = spec.tool
-    timed = points or spec.resolved_method == "semi_discretization"
-    sim_tool = _for_simulation(tool) if timed else None
+    sim_tool = _for_simulation(tool) if points else None
     spec = ChatterSpec(spec.process, spec.speeds_rpm, spec.method, spec.frf_source, spec.tool,
                        spec.frf_at_each_speed, spec.method_options, points, spec.simulation_options)
     result = run_chatter(spec, tool, simulation_tool=sim_tool)
@@ -98,9 +97,9 @@ def _speed_dependent(rotor, speeds) -> bool:
 
 
 def _for_simulation(tool):
-    """A rotor model for the time-domain and semi-discretization methods: its modes up to three
-    times the highest mode with a tenth of the largest peak compliance (the stiff, lightly damped
-    modes far above would only shrink the time step)."""
+    """A rotor model for the time-domain simulation: its modes up to three times the highest mode
+    with a tenth of the largest peak compliance (the stiff, lightly damped modes far above would
+    only shrink the time step)."""
     from ..chatter.state_space import ToolPointModel
 
     def cut(m):
@@ -122,7 +121,7 @@ def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> li
     paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, tool, deck_tool, info)]
     dg = result.diagram
     paths.append(draw(outdir / "chatter_lobes.png", lobes_figure, dg, result.simulations, at_deck,
-                      info.get("deck_speed_rpm")))
+                      info.get("deck_speed_rpm"), result.recommendation))
     shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
     if shown is not None:
         paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
@@ -133,11 +132,11 @@ def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> li
     return paths
 
 
-def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None):
+def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None, recommendation=None):
     """The lobe diagram; with ``at_deck`` (the lobes from the FRF at the deck speed) drawn over it, dashed."""
     from ..chatter.plots import lobe_diagram_figure
 
-    fig = lobe_diagram_figure(diagram, simulations=simulations)
+    fig = lobe_diagram_figure(diagram, simulations=simulations, recommendation=recommendation)
     if at_deck is not None:
         ax = fig.axes[0]
         ax.plot(at_deck.speed_rpm, 1e3 * at_deck.limit_depth_m, color="0.35", lw=1.1, ls="--",

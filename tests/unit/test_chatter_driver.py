@@ -11,11 +11,22 @@ TOOL = ToolPointModel.from_modes([Mode("x", 922.0, 0.011, 1.34e6), Mode("y", 101
 
 
 def test_auto_method_per_process():
+    """auto: zero order only for a constant directional matrix (full slot, 4 teeth), semi-discretization
+    for the rest; the diagram says which method produced each speed and why it was chosen."""
     speeds = np.linspace(8000, 12000, 5)
     low = MillingProcess(2, 20e-3, 1e-3, "down", 6e8, 1 / 3)
     half = MillingProcess(2, 20e-3, 10e-3, "down", 6e8, 1 / 3)
-    assert stability_lobes(low, TOOL, speeds, n_depths=6, steps=20).method == "semi_discretization"
-    assert stability_lobes(half, TOOL, speeds).method == "zero_order"
+    slot4 = MillingProcess(4, 20e-3, 20e-3, "down", 6e8, 1 / 3)
+    d = stability_lobes(low, TOOL, speeds, n_depths=6, steps=40)
+    assert d.method == "semi_discretization" and list(d.method_per_speed) == ["semi_discretization"] * 5
+    assert d.selection.startswith("auto: semi-discretization") and "fluctuates by 614 %" in d.selection
+    assert stability_lobes(half, TOOL, speeds, n_depths=6).method == "semi_discretization"
+    z = stability_lobes(slot4, TOOL, speeds)
+    assert z.method == "zero_order" and set(z.method_per_speed) == {"zero_order"} and "constant" in z.selection
+    assert stability_lobes(slot4, TOOL, speeds, "semi_discretization", n_depths=6).selection == \
+        "semi-discretization (Insperger-Stepan), as requested"
+    forced = stability_lobes(half, TOOL, speeds, "zero_order")
+    assert forced.selection.startswith("zero order (Altintas-Budak), as requested; CAUTION")
     assert stability_lobes(TurningProcess(2e9, 1.2), TOOL, speeds).method == "oriented_frf"
     with pytest.raises(ValueError, match="does not apply"):
         stability_lobes(half, TOOL, speeds, "oriented_frf")
@@ -51,7 +62,7 @@ def test_deck_to_result_with_measured_file(tmp_path):
         "simulate": {"points": [{"speed_rpm": 10000.0, "depth_mm": 0.1}], "tooth_periods": 100}})
     spec = build_chatter(sec, tmp_path)
     res = run_chatter(spec)
-    assert res.diagram.method == "zero_order" and np.all(np.isfinite(res.diagram.limit_depth_m))
+    assert res.diagram.method == "semi_discretization" and np.all(np.isfinite(res.diagram.limit_depth_m))
     assert len(res.simulations) == 1 and res.simulations[0].stable
     rotor = build_chatter(ChatterSection.model_validate({**sec.model_dump(), "frf": "rotor", "simulate": None}))
     with pytest.raises(ValueError, match="rotor"):

@@ -134,5 +134,9 @@ def test_turning_force_model():
     with pytest.raises(ValueError, match="does not apply"):
         p.method_for("zero_order")
     mill = MillingProcess(2, 20e-3, 1e-3, "down", 6e8, 1 / 3)
-    assert mill.method_for("auto") == "semi_discretization"  # 5 % < 30 %
-    assert MillingProcess(2, 20e-3, 10e-3, "down", 6e8, 1 / 3).method_for("auto") == "zero_order"
+    assert mill.method_for("auto") == "semi_discretization"  # 5 %: interrupted cut
+    # zero order only where the directional matrix is constant: a full slot with 4, 6, 8 teeth
+    for teeth, ae, method in ((2, 10e-3, "semi_discretization"), (2, 20e-3, "semi_discretization"),
+                              (3, 20e-3, "semi_discretization"), (8, 10e-3, "semi_discretization"),
+                              (4, 20e-3, "zero_order"), (6, 20e-3, "zero_order"), (8, 20e-3, "zero_order")):
+        assert MillingProcess(teeth, 20e-3, ae, "down", 6e8, 1 / 3).method_for("auto") == method, (teeth, ae)

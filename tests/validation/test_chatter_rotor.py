@@ -106,6 +106,7 @@ chatter:
 """
 
 
+@pytest.mark.slow
 def test_chatter_command_writes_the_contract(tmp_path):
     text = default_deck("spindle_linear").text + CHATTER_SECTION
     deck = tmp_path / "lin.yaml"
