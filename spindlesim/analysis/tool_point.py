@@ -133,3 +133,20 @@ def tool_point_series(rotor: "Rotor | OperatingPoints", speeds_rpm, node: int | 
         models.append(ToolPointModel(m.A, m.B, m.C, f"rotor model ({model}), node {n_node}, {s:g} rpm"))
         tick()
     return ToolPointSeries(speeds, tuple(models), n_node, model, tuple(states))
+
+
+#: bearings whose coefficients change more than this over the speed range are speed-dependent
+COEFFICIENT_RTOL = 1e-3
+
+
+def coefficients_change(rotor: "Rotor | OperatingPoints", speeds_rpm) -> bool:
+    """Whether any bearing's stiffness or damping changes by more than COEFFICIENT_RTOL between the first and
+    the last of ``speeds_rpm`` (then a lobe diagram needs the tool-point FRF at every speed)."""
+    points = OperatingPoints.of(rotor)
+    a, b = points.state(float(speeds_rpm[0])), points.state(float(speeds_rpm[-1]))
+    for (ka, ca), (kb, cb) in zip(a.coefficients, b.coefficients):
+        for x, y in ((ka, kb), (ca, cb)):
+            scale = max(float(np.max(np.abs(x))), float(np.max(np.abs(y))))
+            if scale > 0 and float(np.max(np.abs(x - y))) > COEFFICIENT_RTOL * scale:
+                return True
+    return False

@@ -41,7 +41,7 @@ from scipy.optimize import minimize_scalar
 
 from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
-from .semi_discretization import SdProblem
+from .semi_discretization import SdProblem, workers, parallel_map
 from .state_space import ToolSource, as_state_space, tool_at_speeds
 
 __all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_STEPS"]
@@ -72,10 +72,18 @@ class _Grouped:
     def spectral_radius(self, s_idx, depth) -> np.ndarray:
         s_idx, depth = np.asarray(s_idx), np.asarray(depth, float)
         out = np.empty(len(s_idx))
+        pieces = []  # each step count's speeds, shared among the worker threads
         for g, prob in enumerate(self.problems):
-            sel = self.group[s_idx] == g
-            if sel.any():
-                out[sel] = prob.spectral_radius(self.local[s_idx[sel]], depth[sel])
+            idx = np.flatnonzero(self.group[s_idx] == g)
+            if len(idx):
+                pieces += [(prob, p) for p in np.array_split(idx, min(len(idx), workers()))]
+        radii = parallel_map(lambda t: t[0].spectral_radius(self.local[s_idx[t[1]]], depth[t[1]]), pieces)
+        for (_, p), r in zip(pieces, radii):
+            out[p] = r
+        return out
+        radii = parallel_map(lambda ps: ps[0].spectral_radius(self.local[s_idx[ps[1]]], depth[ps[1]]), sels)
+        for (_, sel), r in zip(sels, radii):
+            out[sel] = r
         return out
 
     def critical(self, s: int, depth: float):

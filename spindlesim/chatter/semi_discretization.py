@@ -35,6 +35,9 @@ Fourier-analysed and the largest harmonic q is taken (Dombovari, Zatarain and In
 from __future__ import annotations
 
 import logging
+import os
+import threading
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -83,6 +86,34 @@ def _monodromy(P, R0, R1, Cr, Yx=None, Yh=None):
     out[:, :n] = X
     out[:, n:] = Ys[:, ::-1].reshape(E, m * r, N)  # new slot s holds y_{m-1-s}
     return out
+
+
+_POOLS: dict[int, ThreadPoolExecutor] = {}
+
+
+def workers() -> int:
+    """Threads for the monodromy batches: the cores this process may use (numpy and LAPACK release the
+    interpreter lock in the products, solves and eigenvalue problems, where the time goes)."""
+    try:
+        n = len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        n = os.cpu_count() or 1
+    return max(1, min(n, 8))
+
+
+_PREFIX = "semi-discretization"
+
+
+def parallel_map(fn, items) -> list:
+    """``[fn(x) for x in items]``, on the worker threads when there are several items and this is not
+    already a worker (a worker waiting on its own pool could wait forever)."""
+    items = list(items)
+    n = workers()
+    if n == 1 or len(items) < 2 or threading.current_thread().name.startswith(_PREFIX):
+        return [fn(x) for x in items]
+    if n not in _POOLS:
+        _POOLS[n] = ThreadPoolExecutor(n, thread_name_prefix=_PREFIX)
+    return list(_POOLS[n].map(fn, items))
 
 
 def _spectral_radii(Phi: np.ndarray) -> np.ndarray:
@@ -168,11 +199,12 @@ class SdProblem:
 
     def _directional(self, depth: float) -> np.ndarray:
         key = float(depth)
-        if key not in self._K:
+        K = self._K.get(key)
+        if K is None:  # (a local reference: another thread may clear the cache meanwhile)
             if len(self._K) > 4096:
                 self._K.clear()
-            self._K[key] = self.process.directional_steps(self.steps, key)
-        return self._K[key]
+            K = self._K[key] = self.process.directional_steps(self.steps, key)
+        return K
 
     def monodromy(self, s_idx: np.ndarray, depth: np.ndarray) -> np.ndarray:
         """Monodromy matrices [E, N, N] at speeds ``speeds[s_idx]`` and depths ``depth`` [m]."""
@@ -236,10 +268,13 @@ class SdProblem:
         N = self.A.shape[1] + self.U.shape[1] * self.steps
         m, size = self.steps, self.A.shape[1] + 2 * self.U.shape[1]
         chunk = int(np.clip(2e7 // max(N * N, 6 * m * size * size, m * self.U.shape[1] * N), 1, 128))
-        out = np.empty(len(s_idx))
-        for a in range(0, len(s_idx), chunk):
-            out[a:a + chunk] = _spectral_radii(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]))
-        return out
+        chunk = min(chunk, max(1, -(-len(s_idx) // workers())))  # every worker gets a share
+        starts = range(0, len(s_idx), chunk)
+
+        def part(a):
+            return _spectral_radii(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]))
+
+        return np.concatenate(parallel_map(part, starts))
 
     def critical(self, s: int, depth: float) -> CriticalMultiplier:
         """Critical multiplier, boundary kind and dominant chatter frequency at one point."""

@@ -23,7 +23,7 @@ import scipy.linalg as sla
 
 from .frf import Mode, ToolPointFrf
 
-__all__ = ["ToolPointModel", "ModeSummary", "Tool", "ToolSource", "tool_at_speeds", "as_state_space"]
+__all__ = ["ToolPointModel", "ModeSummary", "Tool", "ToolSource", "tool_at_speeds", "as_state_space", "for_simulation"]
 
 log = logging.getLogger(__name__)
 _COND_LIMIT = 1e10
@@ -239,3 +239,18 @@ def as_state_space(tool: Tool, **fit_options) -> ToolPointModel:
 
     log.info("fitting a modal model to the sampled FRF (%s)", tool.source or "unnamed")
     return fit_tool_point_model(tool, **fit_options).model
+
+
+def for_simulation(tool):
+    """A rotor model for the time-domain simulation: its modes up to three times the highest mode with a
+    tenth of the largest peak compliance (the stiff, lightly damped modes far above would only shrink the
+    time step); a list of models model by model; anything else as it is."""
+    def cut(m):
+        if not isinstance(m, ToolPointModel) or m.A.shape[0] <= 16:
+            return m
+        top = max(s.frequency_hz for s in m.significant_modes(rel=0.1))
+        return m.truncated(3.0 * top)
+
+    if isinstance(tool, list):
+        return [cut(m) for m in tool]
+    return cut(tool)

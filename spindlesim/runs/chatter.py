@@ -19,11 +19,13 @@ import numpy as np
 
 log = logging.getLogger(__name__)
 
-COEFFICIENT_RTOL = 1e-3  # bearings whose coefficients change more over the speed range are speed-dependent
+#: the lobes of the FRF at the deck speed, drawn for comparison, are solved at every this-many-th speed
+COMPARE_EVERY = 4
 
 
 def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
     from ..chatter import build_chatter, run_chatter, stability_lobes
+    from ..chatter.state_space import for_simulation
     from ..chatter.section import ChatterSpec
 
     from ..deck import require_section
@@ -40,77 +42,49 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         from ..deck import require_rotor
 
         require_rotor(loaded, "chatter")  # a located deck error (exit 2) without shaft, bearings or operating
-        tool, deck_tool, info = _rotor_tools(d, spec, bool(opts.get("exact")), progress)
+        tool, deck_tool, info = _rotor_tools(loaded, spec, bool(opts.get("exact")), progress)
     else:
         tool = spec.tool
-    sim_tool = _for_simulation(tool) if points else None
+    sim_tool = for_simulation(tool) if points else None
     spec = ChatterSpec(spec.process, spec.speeds_rpm, spec.method, spec.frf_source, spec.tool,
                        spec.frf_at_each_speed, spec.method_options, points, spec.simulation_options)
     result = run_chatter(spec, tool, simulation_tool=sim_tool)
     at_deck = None
-    if deck_tool is not None and info["frf_at_each_speed"]:
-        at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm, spec.method, **dict(spec.method_options))
+    if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed
+        at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
+                                  **dict(spec.method_options))
     return _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info)
 
 
-def _rotor_tools(d, spec, exact: bool, progress):
-    """(tool for the lobes, tool at the deck speed, provenance) from the deck's rotor."""
-    from ..analysis.tool_point import tool_point_model, tool_point_series
-    from ..model.build import build_rotor
+def _rotor_tools(loaded, spec, exact: bool, progress):
+    """(tool for the lobes, tool at the deck speed, provenance) from the deck's rotor at its operating points
+    (each speed's state solved once, shared with the other analyses of the run)."""
+    from ..analysis.tool_point import coefficients_change, tool_point_model, tool_point_series
+    from .common import operating_points
 
-    rotor = build_rotor(d)
-    deck_rpm = float(d.operating.speed_rpm)
+    points = operating_points(loaded)
+    rotor = points.rotor
+    deck_rpm = float(loaded.deck.operating.speed_rpm)
     speeds = spec.speeds_rpm
     per_speed = spec.frf_at_each_speed
     reason = "deck"
     if per_speed is None:
-        per_speed, reason = _speed_dependent(rotor, speeds), "bearing coefficients"
+        per_speed, reason = coefficients_change(points, speeds), "bearing coefficients"
     info = {"frf_source": "rotor", "frf_at_each_speed": bool(per_speed), "deck_speed_rpm": deck_rpm,
             "frf_at_each_speed_reason": reason}
     if rotor.tool_tip is None:
-        log.warning("the deck has no tool section: the cutting point is node 1")
+        log.info("the deck has no tool section: the cutting point is node 1")
     if per_speed:
-        series = tool_point_series(rotor, speeds, exact=exact, progress=progress)
+        series = tool_point_series(points, speeds, exact=exact, progress=progress)
         info.update(node=series.node, model=series.model)
-        deck_tool = tool_point_model(rotor, deck_rpm) if deck_rpm > 0 else series.models[0]
+        deck_tool = tool_point_model(points, deck_rpm) if deck_rpm > 0 else series.models[0]
         return list(series.models), deck_tool, info
     if deck_rpm <= 0:
         raise ValueError("chatter with the FRF at the deck speed needs operating.speed_rpm > 0 "
                          "(or frf_at_each_speed: true)")
-    deck_tool = tool_point_model(rotor, deck_rpm)
+    deck_tool = tool_point_model(points, deck_rpm)
     info.update(node=(rotor.tool_tip + 1) if rotor.tool_tip is not None else 1, model="full state space")
     return deck_tool, deck_tool, info
-
-
-def _speed_dependent(rotor, speeds) -> bool:
-    """Whether any bearing's stiffness or damping changes by more than COEFFICIENT_RTOL between the
-    first and the last speed of the diagram."""
-    from ..analysis.operating import operating_state
-
-    a, b = operating_state(rotor, float(speeds[0])), operating_state(rotor, float(speeds[-1]))
-    for (ka, ca), (kb, cb) in zip(a.coefficients, b.coefficients):
-        for x, y in ((ka, kb), (ca, cb)):
-            scale = max(float(np.max(np.abs(x))), float(np.max(np.abs(y))))
-            if scale > 0 and float(np.max(np.abs(x - y))) > COEFFICIENT_RTOL * scale:
-                return True
-    return False
-
-
-def _for_simulation(tool):
-    """A rotor model for the time-domain simulation: its modes up to three times the highest mode
-    with a tenth of the largest peak compliance (the stiff, lightly damped modes far above would
-    only shrink the time step)."""
-    from ..chatter.state_space import ToolPointModel
-
-    def cut(m):
-        if not isinstance(m, ToolPointModel) or m.A.shape[0] <= 16:
-            return m
-        top = max(s.frequency_hz for s in m.significant_modes(rel=0.1))
-        return m.truncated(3.0 * top)
-
-    if isinstance(tool, list):
-        return [cut(m) for m in tool]
-    return cut(tool)
 
 
 def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> list[Path]:
@@ -140,6 +114,6 @@ def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None, recomm
     if at_deck is not None:
         ax = fig.axes[0]
         ax.plot(at_deck.speed_rpm, 1e3 * at_deck.limit_depth_m, color="0.35", lw=1.1, ls="--",
-                label=f"FRF at the deck speed ({deck_speed_rpm:g} rpm)")
+                label=f"FRF at the deck speed ({deck_speed_rpm:g} rpm; every {COMPARE_EVERY}th speed)")
         ax.legend(loc="upper left", fontsize="small")
     return fig

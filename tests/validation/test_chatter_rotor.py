@@ -23,7 +23,7 @@ from spindlesim.chatter import MillingProcess, ToolPointFrf, zero_order_lobes
 from spindlesim.cli import main
 from spindlesim.deck import default_deck, parse_deck
 from spindlesim.model.build import build_rotor
-from spindlesim.runs.chatter import _speed_dependent
+from spindlesim.analysis.tool_point import coefficients_change as _speed_dependent
 
 MILL = default_deck("milling_spindle")
 

@@ -1,0 +1,42 @@
+"""The semi-discretization shares its monodromy batches among threads: the limit depths do not depend
+on how many threads there are, and a worker that asks for more parallel work runs it itself (a worker
+waiting on its own pool would wait forever)."""
+
+import threading
+
+import numpy as np
+
+import spindlesim.chatter.sd_lobes as sd_lobes
+import spindlesim.chatter.semi_discretization as sd
+from spindlesim.chatter import MillingProcess, Mode, ToolPointModel, stability_lobes
+
+FN, ZETA, MT = 922.0, 0.011, 0.03993
+TOOL = ToolPointModel.from_modes([Mode("x", FN, ZETA, MT * (2 * np.pi * FN) ** 2),
+                                  Mode("y", 1.1 * FN, ZETA, MT * (2 * np.pi * 1.1 * FN) ** 2)])
+PROCESS = MillingProcess(2, 20e-3, 5e-3, "down", 6e8, 1 / 3)
+
+
+def _with_workers(monkeypatch, n):
+    monkeypatch.setattr(sd, "workers", lambda: n)
+    monkeypatch.setattr(sd_lobes, "workers", lambda: n)
+
+
+def test_limits_do_not_depend_on_the_thread_count(monkeypatch):
+    speeds = np.linspace(9000.0, 24000.0, 12)
+    runs = {}
+    for n in (1, 3):
+        _with_workers(monkeypatch, n)
+        runs[n] = stability_lobes(PROCESS, TOOL, speeds, "semi_discretization").limit_depth_m
+    assert np.all(np.isfinite(runs[1]))
+    np.testing.assert_allclose(runs[3], runs[1], rtol=1e-8)
+
+
+def test_nested_parallel_work_runs_in_the_worker(monkeypatch):
+    _with_workers(monkeypatch, 2)
+    out = []
+    caller = threading.Thread(target=lambda: out.append(
+        sd.parallel_map(lambda k: sd.parallel_map(lambda j: (k, j), range(3)), range(4))), daemon=True)
+    caller.start()
+    caller.join(timeout=60.0)  # a deadlock fails the test instead of hanging the suite
+    assert not caller.is_alive(), "nested parallel_map deadlocked"
+    assert out == [[[(k, j) for j in range(3)] for k in range(4)]]
