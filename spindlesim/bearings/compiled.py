@@ -36,7 +36,6 @@ class RigidRaceForce(NamedTuple):
 
 class FlexibleRaceForce(NamedTuple):
     f0: int
-    f1: int
     i0: int
 
 
@@ -94,6 +93,6 @@ def _force(h, fl, it, q, v, t, speed, angle, out):
         return rigid
     if cls is FlexibleRaceForce:
         def flexible(h, fl, it, q, v, t, speed, angle, out):
-            flexible_race_kernel.force_at(fl, h.f0, h.f1, it, h.i0, q, v, speed, angle, out)
+            flexible_race_kernel.force_at(fl, h.f0, it, h.i0, q, v, speed, angle, out)
         return flexible
     return None

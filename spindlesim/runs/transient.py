@@ -27,6 +27,10 @@ log = logging.getLogger(__name__)
 RPM = math.pi / 30.0
 #: scipy method names of the rig section's integrator.method
 _RIG_METHODS = {"RK4": "rk4"}
+#: bound of the flexible race's default RK4 step [s]: its segment-on-housing and beam modes (about 200 kHz)
+#: set the step through the stability limit (about 1.4 us with the default housing), not the accuracy of the
+#: kHz response; the rigid race keeps the engine's 1 us (issue 4)
+FLEXIBLE_RACE_STEP_BOUND = 2e-6
 
 
 def _override_rollers(deck: Any, rollers: int | None, model: str | None) -> Any:
@@ -42,7 +46,7 @@ def _override_rollers(deck: Any, rollers: int | None, model: str | None) -> Any:
 
 def rig_setup(sec: Any, opts: dict):
     """(rotor, settings) of the rig section ``transient:``."""
-    from ..analysis.transient.engine import TransientSettings
+    from ..analysis.transient.engine import RK4_STEP, TransientSettings
     from ..model.rig import rig_rotor
 
     model = opts.get("model") or sec.model
@@ -53,7 +57,8 @@ def rig_setup(sec: Any, opts: dict):
         T, method=_RIG_METHODS.get(it.method, it.method),
         step_s=it.step_us * 1e-6 if it.step_us else None, sample_rate_hz=it.sample_rate_hz,
         settle_s=sec.settle_s if sec.settle_s is not None and sec.settle_s < T else 0.4 * T,
-        record_node=0, rtol=it.rtol or (1e-5 if model == "flexible_race" else 1e-7), chunks=it.chunks)
+        record_node=0, rtol=it.rtol or (1e-5 if model == "flexible_race" else 1e-7), chunks=it.chunks,
+        rk4_step_bound_s=FLEXIBLE_RACE_STEP_BOUND if model == "flexible_race" else RK4_STEP)
     return rotor, settings
 
 
