@@ -41,6 +41,8 @@ class FlexibleRaceForce(NamedTuple):
 
 #: kernel number -> handle type (the table of compiled families)
 HANDLES = {LINEAR: LinearForce, RIGID_RACE: RigidRaceForce, FLEXIBLE_RACE: FlexibleRaceForce}
+#: the source files of every family's compiled force: a compiled loop over the handles inlines them
+KERNEL_FILES = (__file__, rigid_race_kernel.__file__, flexible_race_kernel.__file__)
 
 
 def handle(kind: int, f0: int, f1: int, i0: int) -> NamedTuple:

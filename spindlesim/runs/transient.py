@@ -97,9 +97,8 @@ def rotor_setup(deck: Any, opts: dict):
 def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = None) -> list[Path]:
     from ..analysis.modal import solve_modal
     from ..analysis.transient.engine import simulate
-    from ..output.figures import save_figure
-    from ..output.transient_plots import (bearing_output_figure, orbit_figure, poincare_figure,
-                                          run_up_figure, spectrum_figure, time_figure)
+    from ..output import transient_plots as tp
+    from ..output.drawing import draw
     from ..output.transient_writer import write_transient
 
     d = loaded.deck
@@ -123,16 +122,18 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz)]
     if plots_wanted(opts):
         op = operating_text(d)
-        figs = {"transient_time.png": time_figure(res, op), "transient_orbit.png": orbit_figure(res, op),
-                "transient_spectrum.png": spectrum_figure(res, modal_hz, op),
-                "transient_poincare.png": poincare_figure(res, op)}
+        shown = tp.for_figures(res)  # what a figure process is sent: no rotor DOFs, no bearing forces
+        figs = [("transient_time.png", tp.time_figure, (shown, op)),
+                ("transient_orbit.png", tp.orbit_figure, (shown, op)),
+                ("transient_spectrum.png", tp.spectrum_figure, (shown, modal_hz, op)),
+                ("transient_poincare.png", tp.poincare_figure, (shown, op))]
         if settings.speed_rpm is not None:
-            figs["transient_run_up.png"] = run_up_figure(res, operating=op)
-        for b, outs in enumerate(res.bearing_outputs):
-            for name, (value, _) in outs.items():
-                if name != "force" and np.ndim(value) == 2:
-                    figs[f"transient_{res.bearing_names[b]}_{name}.png"] = bearing_output_figure(res, b, name, op)
-        paths += [save_figure(fig, outdir / name) for name, fig in figs.items()]
+            figs.append(("transient_run_up.png", tp.run_up_figure, (shown, None, op)))
+        for b, outs in enumerate(shown.bearing_outputs):
+            for name in outs:
+                figs.append((f"transient_{res.bearing_names[b]}_{name}.png", tp.bearing_output_figure,
+                             (shown, b, name, op)))
+        paths += [draw(outdir / name, figure, *args) for name, figure, args in figs]
     if res.complete:
         return paths + _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
     interrupted = is_interrupt(res)

@@ -26,7 +26,12 @@ from __future__ import annotations
 import numpy as np
 from numba import literal_unroll, njit
 
+from ...bearings.compiled import KERNEL_FILES
 from ...bearings.compiled import force as bearing_force
+from .kernel_cache import track
+
+# rk4 inlines every bearing family's force: its cached machine code is stale when one of them changes
+track(__file__, "rk4", KERNEL_FILES)
 
 # int header: sizes, then (offset) of each block in the int (I_) or float (F_) vector
 (H_N_ROTOR, H_N, H_NB, H_NUB, H_NLD,
