@@ -36,12 +36,13 @@ class RigidRaceForce(NamedTuple):
 
 class FlexibleRaceForce(NamedTuple):
     f0: int
-    f1: int
     i0: int
 
 
 #: kernel number -> handle type (the table of compiled families)
 HANDLES = {LINEAR: LinearForce, RIGID_RACE: RigidRaceForce, FLEXIBLE_RACE: FlexibleRaceForce}
+#: the source files of every family's compiled force: a compiled loop over the handles inlines them
+KERNEL_FILES = (__file__, rigid_race_kernel.__file__, flexible_race_kernel.__file__)
 
 
 def handle(kind: int, f0: int, f1: int, i0: int) -> NamedTuple:
@@ -94,6 +95,6 @@ def _force(h, fl, it, q, v, t, speed, angle, out):
         return rigid
     if cls is FlexibleRaceForce:
         def flexible(h, fl, it, q, v, t, speed, angle, out):
-            flexible_race_kernel.force_at(fl, h.f0, h.f1, it, h.i0, q, v, speed, angle, out)
+            flexible_race_kernel.force_at(fl, h.f0, it, h.i0, q, v, speed, angle, out)
         return flexible
     return None

@@ -23,7 +23,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 from scipy.special import ellipe, ellipk
 
 __all__ = [
@@ -77,6 +76,8 @@ def _ellipse_parameter(ratio_b_over_a: float) -> float:
     def f(m: float) -> float:
         k, e = ellipk(m), ellipe(m)
         return (e / (1.0 - m) - k) / (k - e) - ratio_b_over_a
+
+    from scipy.optimize import brentq  # here: a third of a second of imports the line contacts never need
 
     return brentq(f, 1e-12, 1.0 - 1e-14, xtol=1e-15, rtol=1e-14)
 

@@ -14,9 +14,9 @@ then only sends (figure, arguments) and returns; :func:`wait` returns once every
 on disk and raises the first failure as it would have been raised here.  The plotting modules
 used through ``draw`` import matplotlib inside their functions, so this process never pays for it.
 
-The transient and the single-bearing (``bearing``) runs build their figures themselves and save
-them with :func:`~.figures.save_figure`: a transient's figures need its whole time history, which
-costs more to send than to draw from.
+The single-bearing (``bearing``) run builds its figures itself and saves them with
+:func:`~.figures.save_figure`.  The transient sends its result without the rotor's DOFs
+(``transient_plots.for_figures``) and draws its time series decimated to the pixel columns.
 
 Rules of the figure process (docs/decisions.md, "Process start-up"):
 * it is a child made by ``fork`` before numpy, BLAS threads or any other thread exists; where

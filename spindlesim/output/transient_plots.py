@@ -3,22 +3,34 @@
 Every title states the operating point (node, speed, applied load, oil temperature, method) and,
 for a run that stopped early, why.  Lengths are drawn in the unit that suits their size (um, nm),
 about their steady mean (stated), so that a 1e-5 um vibration on a 0.02 um offset is readable.
+
+A run holds up to millions of samples; a figure has some hundred pixel columns.  Time series are
+drawn decimated to the axes' width at the saved resolution (:func:`column_extremes`: the minimum and
+maximum of every pixel column, in time order, at most two points a column), which draws the same
+picture as every sample.  The margins are fixed in inches (no layout engine, which measures every
+label twice per save).  matplotlib is imported inside the functions: the command sends
+:func:`for_figures` of its result to the figure process (``output.drawing``) and never imports it.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import textwrap
+from typing import TYPE_CHECKING
 
 import numpy as np
-from matplotlib.figure import Figure
-from matplotlib.ticker import MaxNLocator
 
 from ..analysis.transient.result import TransientResult
 from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum
 from .figures import new_figure
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 UM = 1e6
+#: resolution of the saved PNGs (``figures.save_figure``): the pixel columns of an axes
+DPI = 110
 #: characteristic frequencies whose harmonics are marked on the spectrum: rolling-element passes
 PASS_SUFFIXES = ("roller_pass", "ball_pass_outer")
 _PASS_COLORS = ("tab:red", "tab:green", "tab:purple", "tab:brown")
@@ -56,6 +68,52 @@ def _no_data(ax, text: str) -> None:
     ax.text(0.5, 0.5, text, ha="center", va="center", transform=ax.transAxes, color="0.3", wrap=True)
     ax.set_xticks([])
     ax.set_yticks([])
+
+
+def column_extremes(x: np.ndarray, y: np.ndarray, columns: int) -> tuple[np.ndarray, np.ndarray]:
+    """(x, y) reduced to the smallest and largest y of each of ``columns`` runs of consecutive samples
+    (in sample order, at most 2 ``columns`` points): drawn as a line over that many pixel columns it
+    looks like the whole series and holds its extremes.  Short series are returned as they are."""
+    x, y = np.asarray(x), np.asarray(y)
+    n = y.size
+    if n <= 2 * columns:
+        return x, y
+    k = math.ceil(n / columns)
+    m = math.ceil(n / k)
+    pad = m * k - n
+    blocks = np.concatenate([y, np.full(pad, y[-1])]).reshape(m, k)
+    base = np.arange(m) * k
+    lo, hi = base + blocks.argmin(axis=1), base + blocks.argmax(axis=1)
+    idx = np.column_stack([np.minimum(lo, hi), np.maximum(lo, hi)]).ravel()
+    idx = np.minimum(idx, n - 1)
+    idx = idx[np.r_[True, idx[1:] != idx[:-1]]]
+    return x[idx], y[idx]
+
+
+def pixel_columns(ax) -> int:
+    """Width of ``ax`` in pixels of the saved figure."""
+    return max(16, int(math.ceil(ax.get_position().width * ax.figure.get_figwidth() * DPI)))
+
+
+def _fixed(fig, title: str = "", left_in: float = 0.85, right_in: float = 0.25, bottom_in: float = 0.55,
+           hgap_in: float = 0.75, wgap_in: float = 0.75, title_in: float = 0.3) -> None:
+    """Margins and gaps in inches (the figure's suptitle lines above ``title_in`` per panel title)."""
+    w, h = fig.get_size_inches()
+    axes = [a for a in fig.axes if a.get_subplotspec() is not None]
+    grid = axes[0].get_subplotspec().get_gridspec()
+    top_in = title_in + 0.17 * (title.count("\n") + 1 if title else 0) + 0.1
+    rows, cols = grid.nrows, grid.ncols
+    ph = (h - top_in - bottom_in - (rows - 1) * hgap_in) / rows
+    pw = (w - left_in - right_in - (cols - 1) * wgap_in) / cols
+    fig.subplots_adjust(left=left_in / w, right=1 - right_in / w, top=1 - top_in / h, bottom=bottom_in / h,
+                        hspace=hgap_in / ph if rows > 1 else 0.2, wspace=wgap_in / pw if cols > 1 else 0.2)
+
+
+def for_figures(res: TransientResult) -> TransientResult:
+    """``res`` without what no figure draws (every rotor DOF, the bearing forces): what a figure process
+    is sent."""
+    outputs = tuple({k: v for k, v in o.items() if k != "force" and np.ndim(v[0]) == 2} for o in res.bearing_outputs)
+    return dataclasses.replace(res, rotor_displacement=np.zeros((0, 0)), bearing_force_N=(), bearing_outputs=outputs)
 
 
 def length_unit(span_m: float) -> tuple[float, str]:
@@ -103,11 +161,26 @@ def _envelope(t: np.ndarray, y: np.ndarray, period_s: float):
     return t[edges], lo, hi
 
 
+def _band_columns(t: np.ndarray, lo: np.ndarray, hi: np.ndarray, columns: int):
+    """A min-max band reduced to ``columns`` runs of points (the least lo and greatest hi of each)."""
+    n = t.size
+    if n <= columns:
+        return t, lo, hi
+    k = math.ceil(n / columns)
+    starts = np.arange(0, n, k)
+    return np.append(t[starts], t[-1]), np.append(np.minimum.reduceat(lo, starts), lo[-1]), \
+        np.append(np.maximum.reduceat(hi, starts), hi[-1])
+
+
 def time_figure(res: TransientResult, operating: str = "") -> Figure:
     """x and y at the record node: envelope of the whole run (top), the last revolutions (bottom),
     each about its steady mean in a unit that suits the vibration."""
-    fig = new_figure(10, 6.5)
+    from matplotlib.ticker import MaxNLocator
+
+    fig = new_figure(10, 6.5, layout=None)
     axes = fig.subplots(2, 2)
+    title = _title(res, "Response", operating, 10)
+    _fixed(fig, title)
     t = res.time_s
     if not t.size:
         for ax in axes.ravel():
@@ -122,7 +195,8 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
         scale, unit = length_unit(float(np.ptp(d)) or 1e-12)
         top, bottom = axes[0, k], axes[1, k]
         f_rev = _revolution_hz(res)
-        te, lo, hi = _envelope(t, (d - mean) / scale, 1.0 / f_rev if f_rev > 0 else 0.0)
+        te, lo, hi = _band_columns(*_envelope(t, (d - mean) / scale, 1.0 / f_rev if f_rev > 0 else 0.0),
+                                   pixel_columns(top))
         top.fill_between(te, lo, hi, color="tab:blue" if k == 0 else "tab:orange", lw=0.3, alpha=0.7,
                          label="min-max over one revolution" if f_rev > 0 else "min-max envelope")
         settled = res.settling is None or res.settling.settled
@@ -135,21 +209,25 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
         top.set_xlabel("time [s]")
         top.set_ylabel(f"{lab} - mean [{unit}]")
         top.legend(fontsize=7, loc="upper right")
-        bottom.plot(t[w] * 1e3, (d[w] - mean) / scale, lw=1.0, color="tab:blue" if k == 0 else "tab:orange")
+        bottom.plot(*column_extremes(t[w] * 1e3, (d[w] - mean) / scale, pixel_columns(bottom)), lw=1.0,
+                    color="tab:blue" if k == 0 else "tab:orange")
         bottom.set_title(f"{lab}, last {n_rev:.0f} revolutions" if n_rev > 0 else f"{lab}, last samples", fontsize=9)
         bottom.set_xlabel("time [ms]")
         bottom.set_ylabel(f"{lab} - mean [{unit}]")
         for ax in (top, bottom):
             ax.grid(True, alpha=0.3)
             ax.yaxis.set_major_locator(MaxNLocator(6))
-    fig.suptitle(_title(res, "Response", operating, 10), fontsize=9)
+    fig.suptitle(title, fontsize=9)
     return fig
 
 
 def orbit_figure(res: TransientResult, operating: str = "") -> Figure:
     """Orbit of the steady part about its centre, equal axes (what exists when the run stopped early)."""
-    fig = new_figure(6.5, 6.5)
+    from matplotlib.ticker import MaxNLocator
+
+    fig = new_figure(6.5, 6.5, layout=None)
     ax = fig.subplots()
+    _fixed(fig, _title(res, "Orbit, steady part", operating, 6.5), left_in=0.9, bottom_in=0.6)
     steady = _steady(res)
     note = ""
     if steady.sum() < 2:
@@ -204,9 +282,11 @@ def pass_frequencies(res: TransientResult) -> dict[str, float]:
 def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, operating: str = "") -> Figure:
     """x and y amplitude spectra with every pass-frequency harmonic in range marked (h x), the
     revolution 1X and 2X, the linear modes and the dominant line."""
-    fig = new_figure(10, 6.5)
+    fig = new_figure(10, 6.5, layout=None)
     ax = fig.subplots(2, 1, sharex=True)
     spec, note = _spectrum_of(res)
+    _fixed(fig, _title(res, "Spectrum of the steady part", operating, 10, resolution=not note), hgap_in=0.3,
+           title_in=0.15)
     f, A = spec.frequency_hz, spec.amplitude
     if not f.size:
         for a in ax:
@@ -223,7 +303,9 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
     scale, unit = length_unit(float(np.max(A)) or 1e-12)
     for k, lab in enumerate(("x", "y")):
         a = ax[k]
-        a.semilogy(f, np.maximum(A[:, k], 1e-30) / scale, lw=0.7, color="tab:blue")
+        shown = f <= fmax
+        a.semilogy(*column_extremes(f[shown], np.maximum(A[shown, k], 1e-30) / scale, pixel_columns(a)), lw=0.7,
+                   color="tab:blue")
         sel = (f > 0) & (f <= fmax)
         i = int(np.argmax(np.where(sel, A[:, k], -1.0)))
         a.plot(f[i], A[i, k] / scale, "v", color="k", ms=6, gid=f"dominant:{lab}")
@@ -278,11 +360,15 @@ def _periodicity_text(p) -> str:
 def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
     """Every Poincare set: x against dx/dt about the steady mean, with what the analysis says of it
     (period-k, not periodic, too few points; a period-1 set is drawn as one point)."""
+    from matplotlib.ticker import MaxNLocator
+
     sets = [p for p in res.poincare if p.time_s.size]
     ncol = min(max(len(sets), 1), 3)
     nrow = max(1, math.ceil(len(sets) / ncol))
-    fig = new_figure(4.3 * ncol, 3.9 * nrow + 0.5)
+    fig = new_figure(4.3 * ncol, 3.9 * nrow + 0.5, layout=None)
     axes = np.atleast_1d(fig.subplots(nrow, ncol)).ravel()
+    _fixed(fig, _title(res, "Poincare maps", operating, 4.3 * ncol), left_in=0.8, hgap_in=1.25, wgap_in=0.8,
+           title_in=0.75)
     if not sets:
         stop = res.time_s[-1] if res.time_s.size else 0.0
         _no_data(axes[0], "not enough steady data for a Poincare map:\n"
@@ -328,14 +414,18 @@ def _pretty(name: str, units: str) -> str:
 def bearing_output_figure(res: TransientResult, b: int, name: str, operating: str = "") -> Figure:
     """A per-element bearing output (e.g. roller loads): a map over the last revolutions (top) and three
     elements over the last two revolutions (bottom)."""
+    from matplotlib.ticker import MaxNLocator
+
     values, units = res.bearing_outputs[b][name]
-    fig = new_figure(10, 6.5)
+    fig = new_figure(10, 6.5, layout=None)
     ax = fig.subplots(2, 1)
+    what = _pretty(name, units)
+    title = _title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating, 10)
+    _fixed(fig, title, hgap_in=0.85)
     t = res.time_s
     if not t.size:
         _no_data(ax[0], "no samples")
         return fig
-    what = _pretty(name, units)
     element = "roller" if "roller" in name else "ball" if "ball" in name else "element"
     V = values.reshape(len(t), -1)
     cage = min((v for k, v in res.frequencies_hz.items() if k.endswith(".cage") and v > 0), default=0.0)
@@ -343,7 +433,7 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
     m = t >= t[-1] - span
     im = ax[0].imshow(V[m].T, aspect="auto", origin="lower", cmap="viridis",
                       extent=(t[m][0], t[m][-1], 0.5, V.shape[1] + 0.5), interpolation="nearest")
-    fig.colorbar(im, ax=ax[0], label=f"{what} [{units}]")
+    fig.colorbar(im, ax=ax[0], label=f"{what} [{units}]", fraction=0.05, pad=0.01)
     ax[0].set_xlabel("time [s]")
     ax[0].set_ylabel(element)
     ax[0].yaxis.set_major_locator(MaxNLocator(integer=True, nbins=8))
@@ -351,31 +441,34 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
                     fontsize=9)
     w = _window(res, 2)
     for j in range(min(V.shape[1], 3)):
-        ax[1].plot(t[w] * 1e3, V[w, j], lw=1.0, label=f"{element} {j + 1}")
+        ax[1].plot(*column_extremes(t[w] * 1e3, V[w, j], pixel_columns(ax[1])), lw=1.0, label=f"{element} {j + 1}")
     ax[1].set_xlabel("time [ms]")
     ax[1].set_ylabel(f"{what} [{units}]")
     ax[1].set_title(f"{min(V.shape[1], 3)} {element}s, last 2 revolutions", fontsize=9)
     ax[1].legend(fontsize=7, loc="upper right")
     ax[1].grid(True, alpha=0.3)
-    fig.suptitle(_title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating, 10), fontsize=9)
+    fig.suptitle(title, fontsize=9)
     return fig
 
 
 def run_up_figure(res: TransientResult, peak_rpm: float | None = None, operating: str = "") -> Figure:
     """Response amplitude against the speed of a run-up (envelope of |x|, |y|)."""
-    fig = new_figure(9, 5)
+    fig = new_figure(9, 5, layout=None)
     ax = fig.subplots()
+    title = _title(res, "Run-up", operating, 9, settling=False)
+    _fixed(fig, "", title_in=0.2 + 0.17 * (title.count("\n") + 1))
     if not res.time_s.size:
         _no_data(ax, "no samples")
         return fig
     scale, unit = length_unit(float(np.max(np.abs(res.displacement_m))) or 1e-12)
-    ax.plot(res.speed_rpm, np.abs(res.displacement_m[:, 0]) / scale, lw=0.4, label="|x|")
-    ax.plot(res.speed_rpm, np.abs(res.displacement_m[:, 1]) / scale, lw=0.4, label="|y|")
+    columns = pixel_columns(ax)
+    ax.plot(*column_extremes(res.speed_rpm, np.abs(res.displacement_m[:, 0]) / scale, columns), lw=0.4, label="|x|")
+    ax.plot(*column_extremes(res.speed_rpm, np.abs(res.displacement_m[:, 1]) / scale, columns), lw=0.4, label="|y|")
     if peak_rpm is not None:
         ax.axvline(peak_rpm, color="tab:red", ls="--", lw=0.8, label=f"peak at {peak_rpm:.0f} rpm")
     ax.set_xlabel("speed [rpm]")
     ax.set_ylabel(f"displacement [{unit}]")
     ax.legend(fontsize=7)
     ax.grid(True, alpha=0.3)
-    ax.set_title(_title(res, "Run-up", operating, 9, settling=False), fontsize=9)
+    ax.set_title(title, fontsize=9)
     return fig

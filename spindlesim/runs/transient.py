@@ -27,6 +27,10 @@ log = logging.getLogger(__name__)
 RPM = math.pi / 30.0
 #: scipy method names of the rig section's integrator.method
 _RIG_METHODS = {"RK4": "rk4"}
+#: bound of the flexible race's default RK4 step [s]: its segment-on-housing and beam modes (about 200 kHz)
+#: set the step through the stability limit (about 1.4 us with the default housing), not the accuracy of the
+#: kHz response; the rigid race keeps the engine's 1 us (issue 4)
+FLEXIBLE_RACE_STEP_BOUND = 2e-6
 
 
 def _override_rollers(deck: Any, rollers: int | None, model: str | None) -> Any:
@@ -42,7 +46,7 @@ def _override_rollers(deck: Any, rollers: int | None, model: str | None) -> Any:
 
 def rig_setup(sec: Any, opts: dict):
     """(rotor, settings) of the rig section ``transient:``."""
-    from ..analysis.transient.engine import TransientSettings
+    from ..analysis.transient.engine import RK4_STEP, TransientSettings
     from ..model.rig import rig_rotor
 
     model = opts.get("model") or sec.model
@@ -53,7 +57,8 @@ def rig_setup(sec: Any, opts: dict):
         T, method=_RIG_METHODS.get(it.method, it.method),
         step_s=it.step_us * 1e-6 if it.step_us else None, sample_rate_hz=it.sample_rate_hz,
         settle_s=sec.settle_s if sec.settle_s is not None and sec.settle_s < T else 0.4 * T,
-        record_node=0, rtol=it.rtol or (1e-5 if model == "flexible_race" else 1e-7), chunks=it.chunks)
+        record_node=0, rtol=it.rtol or (1e-5 if model == "flexible_race" else 1e-7), chunks=it.chunks,
+        rk4_step_bound_s=FLEXIBLE_RACE_STEP_BOUND if model == "flexible_race" else RK4_STEP)
     return rotor, settings
 
 
@@ -92,9 +97,8 @@ def rotor_setup(deck: Any, opts: dict):
 def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = None) -> list[Path]:
     from ..analysis.modal import solve_modal
     from ..analysis.transient.engine import simulate
-    from ..output.figures import save_figure
-    from ..output.transient_plots import (bearing_output_figure, orbit_figure, poincare_figure,
-                                          run_up_figure, spectrum_figure, time_figure)
+    from ..output import transient_plots as tp
+    from ..output.drawing import draw
     from ..output.transient_writer import write_transient
 
     d = loaded.deck
@@ -118,16 +122,18 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz)]
     if plots_wanted(opts):
         op = operating_text(d)
-        figs = {"transient_time.png": time_figure(res, op), "transient_orbit.png": orbit_figure(res, op),
-                "transient_spectrum.png": spectrum_figure(res, modal_hz, op),
-                "transient_poincare.png": poincare_figure(res, op)}
+        shown = tp.for_figures(res)  # what a figure process is sent: no rotor DOFs, no bearing forces
+        figs = [("transient_time.png", tp.time_figure, (shown, op)),
+                ("transient_orbit.png", tp.orbit_figure, (shown, op)),
+                ("transient_spectrum.png", tp.spectrum_figure, (shown, modal_hz, op)),
+                ("transient_poincare.png", tp.poincare_figure, (shown, op))]
         if settings.speed_rpm is not None:
-            figs["transient_run_up.png"] = run_up_figure(res, operating=op)
-        for b, outs in enumerate(res.bearing_outputs):
-            for name, (value, _) in outs.items():
-                if name != "force" and np.ndim(value) == 2:
-                    figs[f"transient_{res.bearing_names[b]}_{name}.png"] = bearing_output_figure(res, b, name, op)
-        paths += [save_figure(fig, outdir / name) for name, fig in figs.items()]
+            figs.append(("transient_run_up.png", tp.run_up_figure, (shown, None, op)))
+        for b, outs in enumerate(shown.bearing_outputs):
+            for name in outs:
+                figs.append((f"transient_{res.bearing_names[b]}_{name}.png", tp.bearing_output_figure,
+                             (shown, b, name, op)))
+        paths += [draw(outdir / name, figure, *args) for name, figure, args in figs]
     if res.complete:
         return paths + _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
     interrupted = is_interrupt(res)

@@ -168,3 +168,22 @@ def test_rotor_released_from_a_perturbation_is_not_settled(tmp_path):
         assert abs(dominant - a["ringing_mode_hz"]) <= 2 * a["frequency_resolution_hz"]
     assert "NOT SETTLED: the free vibration of the start has not died out" in r.output
     assert "(of a response that has NOT SETTLED)" in r.output
+
+
+@pytest.mark.slow
+def test_figures_from_the_figure_process_equal_those_drawn_in_the_main_process(tmp_path):
+    # the command sends its result (without the rotor's DOFs) to the figure process: the same PNGs
+    import os
+    import subprocess
+
+    exe = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
+    args = [str(exe), "transient", "--rollers", "8", "--duration", "0.05", "-q", "-o"]
+    a = subprocess.run(args + [str(tmp_path / "a")], env=env, capture_output=True, text=True, timeout=300)
+    b = subprocess.run(args + [str(tmp_path / "b")], env={**env, "SPINDLESIM_FIGURE_PROCESS": "0"},
+                       capture_output=True, text=True, timeout=300)
+    assert a.returncode == b.returncode == 0, a.stderr + b.stderr
+    pngs = sorted(p.name for p in (tmp_path / "a").glob("*.png"))
+    assert len(pngs) == 5 and pngs == sorted(p.name for p in (tmp_path / "b").glob("*.png"))
+    for name in pngs:
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes(), name

@@ -97,3 +97,14 @@ def test_stability_step_of_an_oscillator():
     w = 2 * np.pi * 1000.0
     h = stability_step_s(np.eye(1), np.array([[w ** 2]]), np.zeros((1, 1)))
     assert h == pytest.approx(2.0 / w, rel=1e-9)
+
+
+def test_rk4_run_that_diverges_stops_with_its_finite_part():
+    # a step 5 times the stability limit (about 0.1 ms here): the state overflows within some hundred steps
+    from spindlesim.analysis.transient.engine import simulate
+
+    r = rigid_rotor()
+    res = simulate(r, TransientSettings(0.5, method="rk4", step_s=5e-4, sample_rate_hz=1000,
+                                        initial_velocity=((0, 1e-4),)))
+    assert not res.complete and "non-finite" in res.reason
+    assert 0 < res.time_s.size < 400 and np.all(np.isfinite(res.displacement_m))

@@ -1,6 +1,6 @@
 """The transient engine's driver: sampling, Poincare instants, exact solutions, incomplete runs."""
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pytest
@@ -88,6 +88,39 @@ def test_failed_run_keeps_what_it_computed(method, fail, word):
     assert word in res.reason and res.reason
     assert res.time_s.size > 0 and 0.2 <= res.time_s[-1] <= 0.3
     assert np.all(np.isfinite(res.displacement_m))
+
+
+@dataclass(frozen=True)
+class Flaky(Sabotage):
+    """The spring, which fails (as a film whose Newton iterate went through the bore) at its first call after
+    t_fail and works again at the next one; ``fail`` "always" keeps failing after t_fail."""
+
+    calls: list = field(default_factory=list, hash=False, compare=False)
+
+    def force_and_tangent(self, q, v, t=0.0, speed=0.0, angle=None):
+        if t > self.t_fail and (self.fail == "always" or not self.calls):
+            self.calls.append(t)
+            from spindlesim.bearings.fluidfilm.reynolds import ReynoldsError
+
+            raise ReynoldsError("journal touches the bore")
+        K = np.eye(2) * M * W ** 2
+        return -K @ q, K, np.zeros((2, 2))
+
+
+@pytest.mark.parametrize("fail", ["once", "always"])
+def test_newmark_step_failing_from_its_predictor_is_solved_again(fail):
+    # once: the step is solved again from zero new acceleration and the run is the spring's; always: the run
+    # stops with its reason and keeps what it computed (a film's error is the contract's ArithmeticError)
+    res = simulate(oscillator_rotor(Flaky(0.26, fail)),
+                   TransientSettings(0.5, sample_rate_hz=1e4, method="newmark", step_s=1e-4,
+                                     perturbation=Perturbation(0, A * M * W ** 2)))
+    if fail == "once":
+        ref = simulate(oscillator_rotor(), TransientSettings(0.5, sample_rate_hz=1e4, method="newmark", step_s=1e-4,
+                                                             perturbation=Perturbation(0, A * M * W ** 2)))
+        assert res.complete and np.max(np.abs(res.displacement_m - ref.displacement_m)) < 1e-9 * A
+        assert res.newton_iterations.max() > 40  # the step solved twice counts both
+    else:
+        assert not res.complete and "touches the bore" in res.reason and 0.2 <= res.time_s[-1] <= 0.3
 
 
 def test_exact_stepping_plan():

@@ -64,7 +64,8 @@ class Perturbation:
 class TransientSettings:
     duration_s: float
     method: str = "newmark"
-    step_s: float | None = None  # largest step (newmark 5e-5 s; rk4 min(1 us, RK4 stability limit))
+    step_s: float | None = None  # largest step (newmark 5e-5 s; rk4 min(rk4_step_bound_s, RK4 stability limit))
+    rk4_step_bound_s: float = RK4_STEP  # the accuracy bound of rk4's default step
     sample_rate_hz: float | None = None  # newmark: every step; rk4: max(2 kHz, 50 x primary frequency)
     settle_s: float | None = None  # start of the steady part (spectrum, Poincare); default 30 % of the run
     speed_rpm: tuple[float, float] | None = None  # (start, stop) ramp; None: the rotor's speed, constant
@@ -85,6 +86,8 @@ class TransientSettings:
             raise ValueError("settle time must lie in [0, duration)")
         if self.step_s is not None and not self.step_s > 0:
             raise ValueError("step must be positive")
+        if not self.rk4_step_bound_s > 0:
+            raise ValueError("the bound of the RK4 step must be positive")
 
 
 def _ratios(bearings, speed: float) -> dict[str, float]:
@@ -197,7 +200,7 @@ def stability_step(system, x0: np.ndarray, v0: np.ndarray) -> float:
 def _plan(settings: TransientSettings, system, x0, v0, f_primary: float) -> Plan:
     h = settings.step_s
     if h is None and settings.method == "rk4":
-        h = min(RK4_STEP, stability_step(system, x0, v0))
+        h = min(settings.rk4_step_bound_s, stability_step(system, x0, v0))
     elif h is None:
         h = NEWMARK_STEP
     if settings.sample_rate_hz is not None:

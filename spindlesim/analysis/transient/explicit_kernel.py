@@ -13,7 +13,10 @@ steps (Poincare) come from the cubic Hermite interpolant of (y, y') at the step 
 
 Everything travels in one float vector and one int vector (``explicit.pack``), with the block
 offsets in the int vector's header (indices below): numba reference-counts every array it takes
-out of a tuple at every call, which cost more than the physics of a small rotor.  The rotor
+out of a tuple at every call, which cost more than the physics of a small rotor.  A bearing whose
+DOFs are consecutive in y (a journal with its internal DOFs) reads its state in place; the others
+are gathered.  The state is checked for non-finite values at every sample (a NaN stays NaN), and
+the end of a step is kept for interpolation only when a Poincare instant falls in the next one.  The rotor
 matrices are coordinate triplets without their zeros: a rigid journal costs a few products, a
 Timoshenko shaft its band.
 """
@@ -23,7 +26,12 @@ from __future__ import annotations
 import numpy as np
 from numba import literal_unroll, njit
 
+from ...bearings.compiled import KERNEL_FILES
 from ...bearings.compiled import force as bearing_force
+from .kernel_cache import track
+
+# rk4 inlines every bearing family's force: its cached machine code is stale when one of them changes
+track(__file__, "rk4", KERNEL_FILES)
 
 # int header: sizes, then (offset) of each block in the int (I_) or float (F_) vector
 (H_N_ROTOR, H_N, H_NB, H_NUB, H_NLD,
@@ -111,6 +119,15 @@ def rk4(y, t0, h, n_steps, every, samples, targets, pstates, p_done, FL, IN, hs)
     for b in range(IN[H_NB]):
         gmax = max(gmax, IN[igo + b + 1] - IN[igo + b])
     F, bq, bv, bf = np.empty(N), np.empty(gmax), np.empty(gmax), np.empty(gmax)
+    # a bearing whose DOFs are consecutive in x reads its state in place (no gather)
+    first = np.full(IN[H_NB], -1, np.int64)
+    for b in range(IN[H_NB]):
+        g0, g1 = IN[igo + b], IN[igo + b + 1]
+        consecutive = True
+        for a in range(1, g1 - g0):
+            consecutive = consecutive and IN[igi + g0 + a] == IN[igi + g0] + a
+        if consecutive and g1 > g0:
+            first[b] = IN[igi + g0]
     K = np.empty((4, N2))
     arg = np.empty(N2)
     yp = y.copy()
@@ -118,6 +135,7 @@ def rk4(y, t0, h, n_steps, every, samples, targets, pstates, p_done, FL, IN, hs)
     w0, acc = FL[IN[F_PROF]], FL[IN[F_PROF] + 1]
     row = 0
     pi = p_done
+    count = every
     for i in range(n_steps + 1):
         t = t0 + i * h
         for stage in range(4):  # the right-hand side at the four RK4 stages
@@ -136,13 +154,22 @@ def rk4(y, t0, h, n_steps, every, samples, targets, pstates, p_done, FL, IN, hs)
             b = 0
             for hb in literal_unroll(hs):  # one compiled body per bearing family present
                 g0, g1 = IN[igo + b], IN[igo + b + 1]
-                for a in range(g1 - g0):
-                    j = IN[igi + g0 + a]
-                    bq[a] = arg[j]
-                    bv[a] = arg[N + j]
-                bearing_force(hb, FL, IN, bq, bv, ts, W, phi, bf)
-                for a in range(g1 - g0):
-                    F[IN[igi + g0 + a]] += bf[a]
+                j0 = first[b]
+                if j0 >= 0:  # in place
+                    q_b, v_b = arg[j0:j0 + g1 - g0], arg[N + j0:N + j0 + g1 - g0]
+                else:
+                    for a in range(g1 - g0):
+                        j = IN[igi + g0 + a]
+                        bq[a] = arg[j]
+                        bv[a] = arg[N + j]
+                    q_b, v_b = bq, bv
+                bearing_force(hb, FL, IN, q_b, v_b, ts, W, phi, bf)
+                if j0 >= 0:
+                    for a in range(g1 - g0):
+                        F[j0 + a] += bf[a]
+                else:
+                    for a in range(g1 - g0):
+                        F[IN[igi + g0 + a]] += bf[a]
                 b += 1
             _accelerations(arg, F, K[stage], FL, IN)
             if stage == 0:
@@ -157,19 +184,22 @@ def rk4(y, t0, h, n_steps, every, samples, targets, pstates, p_done, FL, IN, hs)
                         pi += 1
                 if i == n_steps:
                     return row, 0, pi
-                for a in range(N2):
-                    yp[a] = y[a]
-                    dp[a] = K[0, a]
-        finite = True
+                if pi < targets.size and targets[pi] <= t0 + (i + 1) * h + 1e-9 * h:  # one in the next step
+                    for a in range(N2):
+                        yp[a] = y[a]
+                        dp[a] = K[0, a]
         for a in range(N2):
             y[a] += h / 6.0 * (K[0, a] + 2.0 * K[1, a] + 2.0 * K[2, a] + K[3, a])
-            finite = finite and np.isfinite(y[a])
-        if (i + 1) % every == 0:
+        count -= 1
+        if count == 0:
+            count = every
+            finite = True
             for a in range(N2):
                 samples[row, a] = y[a]
+                finite = finite and np.isfinite(y[a])
             row += 1
-        if not finite:
-            return row, 1, pi
+            if not finite:
+                return row, 1, pi
     return row, 0, pi
 
 

@@ -11,7 +11,6 @@ import logging
 
 import numpy as np
 import scipy.linalg as sla
-from scipy.integrate import solve_ivp
 
 from .result import Plan, Trajectory
 from .system import RotorSystem
@@ -22,6 +21,8 @@ log = logging.getLogger(__name__)
 def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, targets: np.ndarray,
               progress=None, method: str = "DOP853", rtol: float = 1e-8, atol: float | None = None,
               chunks: int = 40, **_) -> Trajectory:
+    from scipy.integrate import solve_ivp  # here: the cross-check methods only (0.1 s of imports)
+
     N = system.size
     lu = sla.cho_factor(system.M)
     prof = system.profile

@@ -17,8 +17,13 @@ by block; the shaft's K(Omega), C(Omega) are affine in the speed and formed from
 pairs.  (On the seed 003 spindle with its 3-lobe bearings, a run-up on linear bearings and the oil
 whirl of tests/validation/test_one_model_oil_whirl.py this takes 45-50 % less time than factorising
 with a 0.25 ratio and evaluating the tangents at every iteration; the trajectories agree to 1e-9 of
-the response, the Newton tolerance.)  States between steps (Poincare instants) are cubic Hermite
-interpolants of (x, v) at the two ends.
+the response, the Newton tolerance.)  The iterations start from the acceleration extrapolated from
+the last two steps, a1 = 2 a0 - a_-1 (a third fewer iterations than from zero new acceleration in an
+oil whirl near the bore, benchmarks/bench_whirl.py); a step whose iterations fail from there is
+solved once more from zero new acceleration with a fresh matrix, so the predictor never costs a
+run.  The factors are LAPACK's getrf/getrs called directly (scipy's wrappers check their input at
+every call, which took longer than the solve for a small rotor).  States between steps (Poincare
+instants) are cubic Hermite interpolants of (x, v) at the two ends.
 """
 
 from __future__ import annotations
@@ -27,6 +32,7 @@ import logging
 
 import numpy as np
 import scipy.linalg as sla
+from scipy.linalg.lapack import dgetrf, dgetrs
 
 from .result import Plan, Trajectory
 from .system import RotorSystem
@@ -47,6 +53,14 @@ def hermite(t0, x0, v0, t1, x1, v1, tp):
     x = (2 * s3 - 3 * s2 + 1) * x0 + (s3 - 2 * s2 + s) * h * v0 + (-2 * s3 + 3 * s2) * x1 + (s3 - s2) * h * v1
     v = ((6 * s2 - 6 * s) * x0 + (3 * s2 - 4 * s + 1) * h * v0 + (-6 * s2 + 6 * s) * x1 + (3 * s2 - 2 * s) * h * v1) / h
     return x, v
+
+
+def _factor(J: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
+    """LU factors of the iteration matrix (LAPACK getrf; what ``scipy.linalg.lu_factor`` returns)."""
+    lu, piv, info = dgetrf(J)
+    if info > 0:
+        raise np.linalg.LinAlgError(f"singular iteration matrix at t = {t:.6g} s")
+    return lu, piv
 
 
 def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, targets: np.ndarray,
@@ -72,11 +86,43 @@ def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, t
     while ti < len(targets) and targets[ti] <= 0.0:
         pt.append(0.0); px.append(x.copy()); pv.append(v.copy())
         ti += 1
-    lu, refactor = None, True
+    a_old = a
+    lu = None
     complete, reason = True, ""
     k, it = 0, 0
     total = plan.n_steps
     report = max(1, total // 200)
+
+    def newton(xn: np.ndarray, t1: float, F1: np.ndarray, fresh: bool) -> tuple[np.ndarray, int]:
+        """x1 solving R(x1) = 0 from the start ``xn`` (modified Newton, module note); (x1, iterations)."""
+        nonlocal lu
+        prev = np.inf
+        for n_it in range(1, max_newton + 1):
+            an = c0 * (xn - x) - v / (BETA * h) - (0.5 / BETA - 1.0) * a
+            vn = v + h * ((1.0 - GAMMA) * a + GAMMA * an)
+            if fresh or lu is None:
+                J = M * c0 + C * c1 + K
+                Ct = np.zeros((N, N))
+                f = system.forces_and_tangents(xn, vn, t1, J, Ct)
+                J += c1 * Ct
+                lu = _factor(J, t1)
+                fresh = False
+            else:
+                f = system.forces(xn, vn, t1)
+            R = F1 + f - M @ an - C @ vn - K @ xn
+            dx = dgetrs(*lu, R)[0]  # LAPACK directly: scipy's lu_solve checks cost more than the solve
+            xn = xn + dx
+            step = float(np.max(np.abs(dx)))
+            if not np.isfinite(step):
+                raise FloatingPointError(f"non-finite state at t = {t1:.6g} s")
+            if step <= tol * max(float(np.max(np.abs(xn))), 1e-9):
+                return xn, n_it
+            if step > REFACTOR_RATIO * prev:  # slow contraction: a fresh iteration matrix
+                fresh = True
+            prev = step
+        raise ArithmeticError(f"Newton did not converge at t = {t1:.6g} s in {max_newton} iterations "
+                              f"(last correction {step:.3g}); try a smaller time step")
+
     try:
         for k in range(1, total + 1):
             t0, t1 = (k - 1) * h, k * h
@@ -84,42 +130,20 @@ def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, t
                 W = prof.speed(t1)
                 K, C = K0 + W * K1, C0 + W * C1
             F1 = system.external(t1)
-            xn = x + h * v + h * h * (0.5 - BETA) * a  # predictor: zero new acceleration
-            prev = np.inf
-            refactor = refactor or it > SLOW_STEP
-            for it in range(1, max_newton + 1):
-                an = c0 * (xn - x) - v / (BETA * h) - (0.5 / BETA - 1.0) * a
-                vn = v + h * ((1.0 - GAMMA) * a + GAMMA * an)
-                if refactor or lu is None:
-                    J = M * c0 + C * c1 + K
-                    Ct = np.zeros((N, N))
-                    f = system.forces_and_tangents(xn, vn, t1, J, Ct)
-                    J += c1 * Ct
-                    lu = sla.lu_factor(J, check_finite=False)
-                    refactor = False
-                else:
-                    f = system.forces(xn, vn, t1)
-                R = F1 + f - M @ an - C @ vn - K @ xn
-                dx = sla.lu_solve(lu, R, check_finite=False)
-                xn = xn + dx
-                step = float(np.max(np.abs(dx)))
-                if not np.isfinite(step):
-                    raise FloatingPointError(f"non-finite state at t = {t1:.6g} s")
-                if step <= tol * max(float(np.max(np.abs(xn))), 1e-9):
-                    break
-                if step > REFACTOR_RATIO * prev:  # slow contraction: a fresh iteration matrix
-                    refactor = True
-                prev = step
-            else:
-                raise ArithmeticError(f"Newton did not converge at t = {t1:.6g} s in {max_newton} iterations "
-                                      f"(last correction {step:.3g}); try a smaller time step")
+            # predictor: the acceleration extrapolated from the last two steps
+            xn = x + h * v + h * h * ((0.5 - BETA) * a + BETA * (2.0 * a - a_old))
+            try:
+                xn, it = newton(xn, t1, F1, it > SLOW_STEP)
+            except (ArithmeticError, ValueError):  # once more from zero new acceleration, with a fresh matrix
+                xn, it = newton(x + h * v + h * h * (0.5 - BETA) * a, t1, F1, True)
+                it += max_newton
             an = c0 * (xn - x) - v / (BETA * h) - (0.5 / BETA - 1.0) * a
             vn = v + h * ((1.0 - GAMMA) * a + GAMMA * an)
             while ti < len(targets) and targets[ti] <= t1 + 1e-12 * h:
                 xp, vp = hermite(t0, x, v, t1, xn, vn, min(targets[ti], t1))
                 pt.append(targets[ti]); px.append(xp); pv.append(vp)
                 ti += 1
-            x, v, a = xn, vn, an
+            x, v, a, a_old = xn, vn, an, a
             if k % every == 0:
                 j = k // every
                 X[j], V[j], iters[j] = x, v, it

@@ -109,6 +109,18 @@ class TableResolution:
             raise ValueError("eccentricity_max must be in (0, 1)")
 
 
+#: tables of a plain bore (no preload): an oil whirl circles the clearance there (e/Cb 0.97-0.98 at 1.4
+#: times the threshold), so its table reaches e/Cb = 0.99, with 24 radial nodes (the spacing in ln(1 - e)
+#: of 16 nodes to 0.95); off the table every call is a full solve, some hundred times slower
+#: (benchmarks/bench_whirl.py).  A multilobe bore keeps the default (its lobes hold the journal off the wall).
+PLAIN_BORE = TableResolution(n_radial=24, eccentricity_max=0.99)
+
+
+def default_resolution(geometry: BearingGeometry) -> TableResolution:
+    """The table resolution of ``geometry``: :data:`PLAIN_BORE` without preload, else the default."""
+    return PLAIN_BORE if geometry.preload == 0 else TableResolution()
+
+
 @dataclass(frozen=True)
 class LandShape:
     """Dimensionless shape of a land in its own frame (start relative to the frame angle)."""
@@ -357,7 +369,7 @@ class TableFilmForce(DimensionalFilmForce):
                  n_axial: int = DEFAULT_AXIAL, resolution: TableResolution | None = None,
                  directory: str | os.PathLike | None = None) -> None:
         self.geometry = geometry
-        self.resolution = resolution or TableResolution()
+        self.resolution = resolution or default_resolution(geometry)
         self.n_circ, self.n_axial = n_circ, n_axial
         groups: dict[LandShape, list[float]] = {}
         for shape, th in land_frames(geometry, n_circ, n_axial):

@@ -48,8 +48,10 @@ DEFAULT_CIRCUMFERENTIAL = 192
 DEFAULT_AXIAL = 12
 
 
-class ReynoldsError(RuntimeError):
-    """The complementarity solve failed (should not happen for a valid film)."""
+class ReynoldsError(RuntimeError, ArithmeticError):
+    """The complementarity solve failed (should not happen for a valid film), or the journal touches the
+    bore.  An ArithmeticError too: the failure the bearing contract's solvers catch (a transient's Newton
+    iterate pushed through the bore ends its step's iterations, not the program)."""
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 
 @dataclass(frozen=True)
@@ -45,6 +44,8 @@ def static_load_distribution(stiffness: float, exponent: float, rollers: int, ra
     hi = half + (radial_load_N / stiffness) ** (1.0 / exponent) + 1e-12
     while residual(hi) < 0:
         hi *= 2.0
+    from scipy.optimize import brentq  # here: scipy.optimize takes a third of a second to import
+
     d = brentq(residual, half, hi, xtol=1e-16, rtol=1e-13, maxiter=200)
     q = stiffness * np.maximum(d * c - half, 0.0) ** exponent
     return LoadDistribution(angle_rad=psi, load_N=q, displacement_m=float(d))

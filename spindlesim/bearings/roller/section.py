@@ -145,13 +145,14 @@ class TransientWaviness(DeckModel):
 class TransientIntegrator(DeckModel):
     # RK4: compiled fixed-step RK4 (default); the others are scipy's adaptive solve_ivp methods on the
     # numpy right-hand side (slow: a cross-check).  step_us bounds the RK4 step (default: 1 us for the
-    # rigid race, the stability limit for the flexible race); rtol is for the adaptive methods
+    # rigid race, the stability limit, at most 2 us, for the flexible race); rtol is for the adaptive methods
     # (default 1e-7 rigid race, 1e-5 flexible race).
     method: Literal["RK4", "RK45", "DOP853", "LSODA", "BDF", "Radau"] = "RK4"
     """RK4: compiled fixed-step Runge-Kutta (default); RK45, DOP853, LSODA, BDF, Radau: scipy's adaptive methods
     on the numpy right-hand side (slow: a cross-check)."""
     step_us: Optional[PositiveFloat] = None
-    """Largest RK4 step. None: 1 us for the rigid race, the RK4 stability limit for the flexible race."""
+    """Largest RK4 step. None: 1 us for the rigid race, the RK4 stability limit (at most 2 us) for the flexible
+    race."""
     rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None
     """Relative tolerance of the adaptive methods. None: 1e-7 for the rigid race, 1e-5 for the flexible race."""
     sample_rate_hz: Optional[PositiveFloat] = None
