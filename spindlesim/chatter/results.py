@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -81,6 +81,41 @@ class LobeDiagram:
     def is_stable(self, speed_rpm: float, depth_m: float) -> bool:
         lim = float(self.limit_at(speed_rpm))
         return bool(np.isnan(lim) or depth_m < lim)
+
+    def merged(self, other: "LobeDiagram", note: str = "") -> "LobeDiagram":
+        """This diagram with ``other``'s speeds added (sorted by speed; the stability map stays this
+        diagram's; the depth cap is the smaller of the two, so that a capped speed of either is at least
+        it); ``note`` is appended to the notes."""
+        speeds = np.concatenate([self.speed_rpm, other.speed_rpm])
+        order = np.argsort(speeds, kind="stable")
+        n_a = len(self.speed_rpm)
+
+        def cat(a, b, fill=None, dtype=None):
+            a = np.asarray(a) if a is not None else np.full(n_a, fill, dtype)
+            b = np.asarray(b) if b is not None else np.full(len(other.speed_rpm), fill, dtype)
+            return np.concatenate([a.astype(dtype) if dtype else a, b.astype(dtype) if dtype else b])[order]
+
+        curves = {}
+        for side, dg in ((0, self), (1, other)):
+            for c in dg.lobes:
+                curves.setdefault((c.kind, c.lobe), [None, None])[side] = c
+        lobes = []
+        for (kind, lobe), (a, b) in sorted(curves.items(), key=lambda kv: (kv[0][0], -kv[0][1])):
+            lim = cat(a.limit_depth_m if a else None, b.limit_depth_m if b else None, np.nan, float)
+            frq = cat(a.chatter_frequency_hz if a else None, b.chatter_frequency_hz if b else None, np.nan, float)
+            lobes.append(LobeCurve(lobe, speeds[order], lim, frq, kind))
+        return replace(self, speed_rpm=speeds[order],
+                       limit_depth_m=cat(self.limit_depth_m, other.limit_depth_m, dtype=float),
+                       chatter_frequency_hz=cat(self.chatter_frequency_hz, other.chatter_frequency_hz, dtype=float),
+                       lobes=tuple(lobes),
+                       boundary_kind=cat(self.boundary_kind if len(self.boundary_kind) == n_a else None,
+                                         other.boundary_kind if len(other.boundary_kind) == len(other.speed_rpm)
+                                         else None, "", "<U4"),
+                       method_per_speed=cat(self.method_per_speed, other.method_per_speed, dtype=object),
+                       capped=cat(self.capped, other.capped, dtype=bool),
+                       depth_cap_m=float(np.nanmin([self.depth_cap_m, other.depth_cap_m]))
+                       if np.isfinite([self.depth_cap_m, other.depth_cap_m]).any() else float("nan"),
+                       notes=self.notes + ((note,) if note else ()))
 
     @property
     def minimum(self) -> tuple[float, float]:

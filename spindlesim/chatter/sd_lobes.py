@@ -10,7 +10,7 @@
 2. Depths: ``depths_m`` as given; or ``n_depths`` up to ``depth_max_m``, which is then also the
    cap; by default ``n_depths`` up to 1.25 min(max a_ZOA, 3 min a_ZOA) from the zero-order solution,
    extended for the speeds still stable there by doubling (``n_depths`` / 2 points a time) up to the
-   cap CAP_FACTOR x min a_ZOA.  A speed stable up to the cap is "capped": its limit is NaN and at
+   cap CAP_FACTOR x min a_ZOA (or ``depth_cap_m``: speeds added to a diagram keep its cap).  A speed stable up to the cap is "capped": its limit is NaN and at
    least the cap, and the notes list it.
 3. The spectral radius rho of the monodromy matrix is evaluated going up the depths, all speeds
    still stable together, until it reaches 1 (the first unstable depth; one more depth above is
@@ -290,7 +290,7 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
                               steps: int | None = None, order: int = 1, points_per_wave: float = 30.0,
                               min_steps: int = 30, max_steps: int = 400, steps_in_cut: int = STEPS_IN_CUT,
                               depths_m: np.ndarray | None = None, depth_max_m: float | None = None,
-                              n_depths: int = 40, rtol: float = 1e-4, peak_check: float = 0.9,
+                              depth_cap_m: float | None = None, n_depths: int = 40, rtol: float = 1e-4, peak_check: float = 0.9,
                               error_tol: float = ERROR_TOL, reduce_model: bool = True,
                               fit_options: dict | None = None, **_ignored) -> LobeDiagram:
     """Limit depth by semi-discretization (module docstring), with the stability map it evaluated.
@@ -318,8 +318,9 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
         grid = _Depths(np.linspace(depth_max_m / n_depths, depth_max_m, n_depths), depth_max_m, 0)
     else:
         a_min, a_max = _zoa_scale(process, models[0], zero_order(models if per_speed else models[0]))
-        top = 1.25 * min(a_max, 3.0 * a_min)
-        grid = _Depths(np.linspace(top / n_depths, top, n_depths), CAP_FACTOR * a_min, max(2, n_depths // 2))
+        cap = CAP_FACTOR * a_min if depth_cap_m is None else float(depth_cap_m)
+        top = min(1.25 * min(a_max, 3.0 * a_min), cap)
+        grid = _Depths(np.linspace(top / n_depths, top, n_depths), cap, max(2, n_depths // 2))
     fixed = steps is not None
     m_s = (np.full(len(speeds), int(steps)) if fixed
            else _auto_steps(process, sd_models, speeds, points_per_wave, min_steps, max_steps, steps_in_cut))

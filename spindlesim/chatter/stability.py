@@ -17,6 +17,7 @@ import logging
 import numpy as np
 
 from .pockets import Pocket, best_pocket, stability_pockets
+from .refine import refine_pockets
 from .results import LobeDiagram, SimulationResult
 from .sd_lobes import semi_discretization_lobes
 from .section import ChatterSpec
@@ -53,11 +54,13 @@ def stability_lobes(process, tool: ToolSource, speeds_rpm, method: str = "auto",
 
 @dataclass(frozen=True, eq=False)
 class ChatterResult:
-    """The lobe diagram, its stability pockets (deepest first) and the time-domain checks."""
+    """The lobe diagram, its stability pockets (deepest first) and the time-domain checks; ``tool`` the
+    tool-point model or FRF the diagram used (a list: one per diagram speed, refined speeds included)."""
 
     diagram: LobeDiagram
     simulations: tuple[SimulationResult, ...]
     pockets: tuple[Pocket, ...] = ()
+    tool: ToolSource | None = None
 
     @property
     def recommendation(self) -> Pocket | None:
@@ -74,18 +77,43 @@ def _tool_at(tool: ToolSource, speeds: np.ndarray, speed: float) -> Tool:
 
 
 def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
-                simulation_tool: ToolSource | None = None) -> ChatterResult:
+                simulation_tool: ToolSource | None = None,
+                tools_at: Callable[[np.ndarray], list] | None = None) -> ChatterResult:
     """Lobe diagram and the requested time-domain checks of a built ``chatter:`` section.
 
     ``tool`` replaces ``spec.tool`` (needed when the deck says ``frf: rotor``);
     ``simulation_tool`` (e.g. a truncated rotor model) serves the time-domain simulations (the
     semi-discretization reduces a large model itself, checked on the zero-order lobes).
+    ``tools_at(speeds)`` gives one tool per speed at speeds off the grid, for the pockets the grid does
+    not resolve (:mod:`~spindlesim.chatter.refine`); a tool that is the same at every speed, or a
+    callable one, needs none, and a list without it is not refined.
     """
     src = tool if tool is not None else spec.tool
     if src is None:
         raise ValueError("frf: rotor needs the rotor's tool-point model (pass tool=...)")
     timed = simulation_tool if simulation_tool is not None else src
-    diagram = stability_lobes(spec.process, src, spec.speeds_rpm, spec.method, **dict(spec.method_options))
+    options = dict(spec.method_options)
+    speeds = np.asarray(spec.speeds_rpm, float)
+    diagram = stability_lobes(spec.process, src, speeds, spec.method, **options)
+    per_speed = isinstance(src, (list, tuple))
+    added: dict[float, Tool] = {}
+    if not per_speed or tools_at is not None:
+        same_cap = dict(options)
+        if np.isfinite(diagram.depth_cap_m) and all(options.get(k) is None for k in ("depths_m", "depth_max_m")):
+            same_cap["depth_cap_m"] = diagram.depth_cap_m  # the added speeds searched as deep as the grid's
+
+        def solve(extra: np.ndarray) -> LobeDiagram:
+            at = src
+            if per_speed:
+                at = list(tools_at(extra))
+                added.update(zip(extra.tolist(), at))
+            return stability_lobes(spec.process, at, extra, spec.method, **same_cap)
+
+        diagram = refine_pockets(diagram, solve)
+    merged = src
+    if per_speed and added:
+        by_speed = dict(zip(speeds.tolist(), src)) | added
+        merged = [by_speed[float(s)] for s in diagram.speed_rpm]
     sims = tuple(simulate(spec.process, _tool_at(timed, spec.speeds_rpm, s), s, a, **dict(spec.simulation_options))
                  for s, a in spec.simulation_points)
-    return ChatterResult(diagram, sims, stability_pockets(diagram))
+    return ChatterResult(diagram, sims, stability_pockets(diagram), merged)

@@ -29,6 +29,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     from ..chatter.section import ChatterSpec
 
     from ..deck import require_section
+    from .common import operating_points
 
     d = loaded.deck
     require_section(loaded, "chatter", "chatter", "operation, cutting coefficients, speeds_rpm, frf")
@@ -37,23 +38,28 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     opts = options or {}
     points = tuple(spec.simulation_points) + tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ())
     info: dict[str, Any] = {"frf_source": spec.frf_source}
-    deck_tool = None
+    deck_tool = tools_at = None
     if spec.frf_source == "rotor":
         from ..deck import require_rotor
 
         require_rotor(loaded, "chatter")  # a located deck error (exit 2) without shaft, bearings or operating
         tool, deck_tool, info = _rotor_tools(loaded, spec, bool(opts.get("exact")), progress)
+        if isinstance(tool, list):
+            from ..analysis.tool_point import tool_point_series
+
+            def tools_at(speeds):  # the tool-point model at speeds added in unresolved pockets
+                return tool_point_series(operating_points(loaded), speeds, exact=bool(opts.get("exact"))).models
     else:
         tool = spec.tool
     sim_tool = for_simulation(tool) if points else None
     spec = ChatterSpec(spec.process, spec.speeds_rpm, spec.method, spec.frf_source, spec.tool,
                        spec.frf_at_each_speed, spec.method_options, points, spec.simulation_options)
-    result = run_chatter(spec, tool, simulation_tool=sim_tool)
+    result = run_chatter(spec, tool, simulation_tool=sim_tool, tools_at=tools_at)
     at_deck = None
     if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed
         at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
                                   **dict(spec.method_options))
-    return _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info)
+    return _write(outdir, run_info, spec, result, at_deck, result.tool, deck_tool, info)
 
 
 def _rotor_tools(loaded, spec, exact: bool, progress):
