@@ -327,6 +327,13 @@ def _spindle_thermal(f):
             line += f"; first natural frequency {fr[0, 0]:.1f} -> {fr[-1, 0]:.1f} Hz"
         lines.append(line)
         data["warm_up_final_drift_m"] = float(drift[-1])
+        if "chatter" in w:
+            dm = w["chatter"]["min_limit_depth_m"][:]
+            if np.isfinite(dm).any():
+                k = int(np.nanargmin(dm))
+                lines.append(f"  minimum stable depth of cut (zero order) {dm[0] * 1e3:.3g} mm cold -> "
+                             f"{dm[-1] * 1e3:.3g} mm at the end; lowest {dm[k] * 1e3:.3g} mm at {t[k] / 60:.0f} min")
+                data["warm_up_min_depth_m"] = [float(v) for v in dm]
     return lines, data
 
 

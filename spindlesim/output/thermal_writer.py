@@ -31,13 +31,15 @@ class WarmUpSeries:
 
     states: tuple
     frequency_hz: np.ndarray
+    minimum_depth: object | None = None  # analysis.warm_up_chatter.MinimumDepth, with a chatter section
 
 
 @dataclass(frozen=True)
 class ThermalTable:
     """What the figures draw, as plain arrays (sent to the figure process): along ``x`` (speeds [rpm] or
     times [s]), per bearing its rings' temperatures [degC] and its largest row thrust [N], the motor's,
-    the tool tip's axial drift [m], the speed at each point, and the natural frequencies [Hz] (warm-up)."""
+    the tool tip's axial drift [m], the speed at each point, the natural frequencies [Hz] and the minimum
+    stable depth of cut [m] (warm-up)."""
 
     x: np.ndarray
     speed_rpm: np.ndarray
@@ -50,9 +52,11 @@ class ThermalTable:
     drift_m: np.ndarray
     frequency_hz: np.ndarray | None = None
     runaway_rpm: float | None = None
+    min_depth_m: np.ndarray | None = None  # warm-up with a chatter section: the minimum stable depth
 
 
-def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: bool = False) -> ThermalTable:
+def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: bool = False,
+             min_depth_m=None) -> ThermalTable:
     x = np.array([s.time_s if in_time else s.speed_rpm for s in states], float)
     motor = "motor:rotor" in states[0].temperatures_C if states else False
     return ThermalTable(
@@ -64,7 +68,8 @@ def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: boo
         np.array([s.temperatures_C["motor:rotor"] for s in states]) if motor else None,
         np.array([s.temperatures_C["motor:stator"] for s in states]) if motor else None,
         np.array([np.nan if s.tool_tip_axial_drift_m is None else s.tool_tip_axial_drift_m for s in states], float),
-        None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm)
+        None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm,
+        None if min_depth_m is None else np.asarray(min_depth_m, float))
 
 
 def _rows(states, bearings) -> int:
@@ -157,4 +162,14 @@ def write_spindle_thermal(path: Path, run: RunInfo, model, series: SpeedSeries, 
                                                  "first damped natural frequencies of the rotor on its bearings at "
                                                  "the temperatures of that instant", fill_nan=True)
         data.update(_common(w, warm.states, bearings, nodes, sources, boundaries, "time_s"))
+        md = warm.minimum_depth
+        if md is not None:
+            c = f"{w}/chatter"
+            data[f"{c}/min_limit_depth_m"] = Data(md.depth_m, "m", ("time_s",),
+                                                   "smallest limit depth of cut over the chatter section's speeds, "
+                                                   "the tool-point FRF of that instant", fill_nan=True)
+            data[f"{c}/speed_rpm"] = Data(md.speed_rpm, "rpm", ("time_s",), "speed of that minimum", fill_nan=True)
+            data[f"{c}/chatter_frequency_hz"] = Data(md.chatter_frequency_hz, "Hz", ("time_s",),
+                                                     "chatter frequency there", fill_nan=True)
+            attrs[c] = {"method": md.method}
     return write_h5(path, run, data, attrs)

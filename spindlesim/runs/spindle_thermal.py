@@ -6,7 +6,8 @@ temperature, each bearing's operating preload (row thrust), contact angles, stif
 the tool tip's axial drift.  A speed at which the arrangement runs away ends the list: it is the speed
 limit of that arrangement, written into the file and the summary (not a failure of the run).  With
 ``warm_up``: the same quantities through the speed steps in time from the cold spindle, with the first
-natural frequencies of the rotor at each instant.  thermal.h5 (group /spindle_thermal) and PNGs.
+natural frequencies of the rotor at each instant and, with a ``chatter:`` section whose FRF comes from the
+rotor, the minimum stable depth of cut (``analysis.warm_up_chatter``).  thermal.h5 (group /spindle_thermal) and PNGs.
 """
 
 from __future__ import annotations
@@ -74,13 +75,30 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
             f[:len(m.frequency_hz)] = m.frequency_hz
             freqs.append(f)
         if instants:
-            warm = WarmUpSeries(instants, np.array(freqs))
+            warm = WarmUpSeries(instants, np.array(freqs), _minimum_depth(loaded, points, instants))
     series = SpeedSeries(tuple(states), runaway, limit)
     paths = [write_spindle_thermal(outdir / "thermal.h5", run_info, model, series, warm)]
     if states:
         table = tabulate(states, model.bearings, runaway_rpm=runaway[0] if runaway else None)
         paths.append(draw(outdir / "thermal_speeds.png", speeds_figure, table, d.title))
     if warm is not None:
-        table = tabulate(warm.states, model.bearings, frequency_hz=warm.frequency_hz, in_time=True)
+        table = tabulate(warm.states, model.bearings, frequency_hz=warm.frequency_hz, in_time=True,
+                         min_depth_m=None if warm.minimum_depth is None else warm.minimum_depth.depth_m)
         paths.append(draw(outdir / "thermal_warm_up.png", warm_up_figure, table, d.title))
     return paths
+
+
+def _minimum_depth(loaded, points, instants):
+    """The minimum stable depth through the warm-up when the deck's chatter section takes its FRF from the
+    rotor (a measured or modal FRF does not change with the spindle's temperatures), else None."""
+    d = loaded.deck
+    if getattr(d, "chatter", None) is None:
+        return None
+    from ..analysis.warm_up_chatter import minimum_depth_through
+    from ..chatter import build_chatter
+
+    base = Path(loaded.source).parent if not loaded.source.startswith("<") else Path.cwd()
+    spec = build_chatter(d.chatter, base)
+    if spec.frf_source != "rotor":
+        return None
+    return minimum_depth_through(points, instants, spec.process, spec.speeds_rpm)
