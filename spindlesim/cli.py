@@ -14,6 +14,7 @@ import os
 import click
 
 from . import __version__
+from .commands.exits import EXIT_INTERRUPTED
 
 COMMANDS: dict[str, tuple[str, str]] = {
     "static": ("static", "Static deflection K^-1 Q, bearing reactions, static stiffness."),
@@ -100,9 +101,6 @@ def _configure_logging(verbose: int) -> None:
     logging.getLogger("spindlesim").setLevel(logging.WARNING - 10 * min(verbose, 2))
     if verbose:  # the sweep's Dask cluster follows -v (sweep/execution.py reads this)
         logging.getLogger("distributed").setLevel(logging.INFO if verbose == 1 else logging.DEBUG)
-
-
-EXIT_INTERRUPTED = 130  # spindlesim.runs.status.EXIT_INTERRUPTED, not imported here: that loads the deck layer
 
 
 def _interrupted() -> None:

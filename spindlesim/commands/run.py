@@ -41,10 +41,11 @@ def command(deck, outdir, no_report):
 
 def _run(deck, outdir, report: bool = True) -> None:
     from ..runs import default_analyses, run_analysis, run_info_for
-    from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, IncompleteRun
+    from ..runs.status import IncompleteRun
     from ..deck import DeckError
     from ..output.report import RunReport
     from .common import print_results, report_deck_error, unit_hint
+    from .exits import outcome_code
 
     loaded = load_or_default(deck, "spindle")
     names = loaded.deck.analyses or default_analyses(loaded)
@@ -82,29 +83,31 @@ def _run(deck, outdir, report: bool = True) -> None:
     if report and not _write_report(book, written):
         failed.append("report")
     print_results(written)
+    code = outcome_code(failed=bool(failed), incomplete=bool(incomplete))
     if failed:
-        click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {EXIT_FAILED})", err=True)
-        sys.exit(EXIT_FAILED)
-    if incomplete:
-        click.echo(f"spindlesim run: incomplete: {', '.join(incomplete)} (exit code {EXIT_INCOMPLETE})", err=True)
-        sys.exit(EXIT_INCOMPLETE)
+        click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {code})", err=True)
+    elif incomplete:
+        click.echo(f"spindlesim run: incomplete: {', '.join(incomplete)} (exit code {code})", err=True)
+    if code:
+        sys.exit(code)
 
 
 def _stop(names: list, name: str, written: list, book=None) -> None:
     """Ctrl-C: the analyses after ``name`` are not started; the report says so; what was written is
     listed; exit code 130."""
-    from ..runs.status import EXIT_INTERRUPTED
     from ..sweep.execution import sigint_ignored
     from .common import print_results
+    from .exits import outcome_code
 
     rest = names[names.index(name) + 1:]
+    code = outcome_code(interrupted=True)
     click.echo(f"spindlesim run: interrupted during {name}" + (f"; not run: {', '.join(rest)}" if rest else "")
-               + f" (exit code {EXIT_INTERRUPTED})", err=True)
+               + f" (exit code {code})", err=True)
     with sigint_ignored():
         if book is not None:
             _write_report(book, written)
         print_results(written)
-    sys.exit(EXIT_INTERRUPTED)
+    sys.exit(code)
 
 
 def _write_report(book, written: list) -> bool:
