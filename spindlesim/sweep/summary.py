@@ -44,7 +44,7 @@ KEY_SCALARS = (
 )
 #: bookkeeping, never plotted
 _NOT_RESULTS = re.compile(r"(iterations|wall_time|elapsed|record_node|step_s|sample_rate|settle_s|@row$|@roller$|"
-                          r"@node$|@rollers$|frequency_hz\.|poincare)")
+                          r"@node$|@rollers$|frequency_hz\.|poincare|@operating_speed_rpm$)")
 
 
 def unit_from_name(name: str) -> str:
