@@ -163,15 +163,17 @@ def _json_default(v):
     return str(v)
 
 
-def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
-    """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks.
+def run_and_report(name: str, deck: Path | None, outdir: Path | None, options: dict) -> None:
+    """Load DECK (or the embedded deck the registry names for ``name``), run analysis ``name``, print what
+    was written; errors become messages, not tracebacks.
 
     From the ``spindlesim`` program the figures are drawn in a figure process started here, before
     anything imports numpy (spindlesim/output/drawing.py)."""
     from ..output.drawing import figure_process
+    from ..registry import analysis
 
     with figure_process():
-        _run_and_report(name, deck, outdir, default_name, options)
+        _run_and_report(name, deck, outdir, analysis(name).deck, options)
 
 
 def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:

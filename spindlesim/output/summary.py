@@ -17,13 +17,10 @@ from typing import Any, Callable
 
 import numpy as np
 
-#: file stem -> "module:function" in spindlesim.output: the summary of that file
-SUMMARIES: dict[str, str] = {
-    "static": "rotor_summary:static", "modal": "rotor_summary:modal", "campbell": "rotor_summary:campbell",
-    "frf": "rotor_summary:frf", "unbalance": "rotor_summary:unbalance", "thermal": "bearing_summary:thermal",
-    "coefficients": "bearing_summary:coefficients", "transient": "summary:transient", "chatter": "summary:chatter",
-    "bearing": "bearing_summary:bearing", "dtrb": "bearing_summary:dtrb", "contact": "bearing_summary:contact",
-}
+from ..registry import ANALYSIS_REGISTRY
+
+#: file stem (an analysis's name) -> "module:function" in spindlesim.output: the summary of that file
+SUMMARIES: dict[str, str] = {a.name: a.summary for a in ANALYSIS_REGISTRY if a.summary}
 
 
 def summary_of(stem: str) -> Callable | None:
