@@ -2,7 +2,7 @@
 
 ``spindlesim --help`` and ``--version`` never import numpy, scipy, h5py or
 matplotlib. Each subcommand lives in ``spindlesim/commands/<name>.py`` as a
-click command named ``command``; add it to ``COMMANDS`` below.
+click command named ``command``; the registry (spindlesim/registry.py) lists them.
 """
 
 from __future__ import annotations
@@ -14,25 +14,11 @@ import os
 import click
 
 from . import __version__
+from .commands.exits import EXIT_INTERRUPTED
+from .registry import commands
 
-COMMANDS: dict[str, tuple[str, str]] = {
-    "static": ("static", "Static deflection K^-1 Q, bearing reactions, static stiffness."),
-    "modal": ("modal", "Damped modes (state-space QR): frequencies, damping, whirl, shapes."),
-    "campbell": ("campbell", "Campbell diagram with tracked modes and critical speeds."),
-    "frf": ("frf", "Complex frequency response (receptance) between two DOFs."),
-    "unbalance": ("unbalance", "Synchronous unbalance response over speed."),
-    "thermal": ("thermal", "Thermal equilibrium of fluid-film bearings (heat balance of film, oil flow and housing)."),
-    "coefficients": ("coefficients", "Fluid-film bearing stiffness and damping at thermal equilibrium."),
-    "transient": ("transient", "Time response of any rotor with its bearings' nonlinear reactions (run-up, whirl, roller pass)."),
-    "bearing": ("bearing", "One bearing (set) under a load: ball bearing stiffness, contact angles, life; or a DTRB."),
-    "dtrb": ("dtrb", "Double-row tapered roller bearing: load distribution, 5x5 stiffness, preload/load sweeps."),
-    "chatter": ("chatter", "Chatter stability lobes from the tool-point FRF (rotor at every speed, tap test or file)."),
-    "contact": ("contact", "Roller/ball contact pressure on a raceway (half-space, DC-FFT + CGM)."),
-    "run": ("run", "Every analysis the deck lists, or every one it has the sections for (run --help)."),
-    "decks": ("decks", "The embedded decks (defaults and examples); `decks show NAME` prints one to start from."),
-    "schema": ("schema", "The deck's JSON schema (editor completion and checking)."),
-    "sweep": ("sweep", "Parameter study over any deck value (process pool or Dask), resumable."),
-}
+#: command -> its line of ``spindlesim --help``; the command is ``spindlesim/commands/<name>.py``
+COMMANDS: dict[str, str] = commands()
 
 
 class LazyGroup(click.Group):
@@ -42,7 +28,7 @@ class LazyGroup(click.Group):
     def get_command(self, ctx, name):
         if name not in COMMANDS:
             return None
-        module = importlib.import_module(f"spindlesim.commands.{COMMANDS[name][0]}")
+        module = importlib.import_module(f"spindlesim.commands.{name}")
         return module.command
 
     def invoke(self, ctx):
@@ -54,7 +40,7 @@ class LazyGroup(click.Group):
             _interrupted()
 
     def format_commands(self, ctx, formatter):
-        rows = [(name, help_) for name, (_, help_) in COMMANDS.items()]
+        rows = list(COMMANDS.items())
         with formatter.section("Commands"):
             formatter.write_dl(rows)
 
@@ -100,9 +86,6 @@ def _configure_logging(verbose: int) -> None:
     logging.getLogger("spindlesim").setLevel(logging.WARNING - 10 * min(verbose, 2))
     if verbose:  # the sweep's Dask cluster follows -v (sweep/execution.py reads this)
         logging.getLogger("distributed").setLevel(logging.INFO if verbose == 1 else logging.DEBUG)
-
-
-EXIT_INTERRUPTED = 130  # spindlesim.runs.status.EXIT_INTERRUPTED, not imported here: that loads the deck layer
 
 
 def _interrupted() -> None:

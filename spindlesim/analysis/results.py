@@ -62,6 +62,17 @@ class CampbellResult:
     crossings: Crossings | None = None  # every excitation order against every tracked mode, API 684 judged
     interrupted: bool = False  # stopped by Ctrl-C (incomplete_reason says where)
 
+    @property
+    def first_unstable(self) -> tuple[int, int] | None:
+        """The stability threshold: (speed index, mode index) of the lowest speed at which a tracked mode's
+        damping ratio is negative (of those modes, the first); None when every tracked mode is stable over
+        the range (an untracked mode, NaN, is neither)."""
+        unstable = np.argwhere(self.damping_ratio < 0)
+        if not unstable.size:
+            return None
+        i, k = unstable[np.argmin(self.speed_rpm[unstable[:, 0]])]
+        return int(i), int(k)
+
 
 @dataclass(frozen=True)
 class FrfResult:

@@ -13,4 +13,4 @@ def command(deck, outdir):
     """Angular-contact / deep-groove ball bearing or set (deck section 'bearing', type: ball): 5x5 stiffness,
     ball loads and contact angles, contact pressures, ISO 281 / ISO/TS 16281 life, sweeps over preload, load
     and speed.  A deck with a 'dtrb' section runs the double-row tapered roller bearing instead."""
-    run_and_report("bearing", deck, outdir, "bearing", {})
+    run_and_report("bearing", deck, outdir, {})

@@ -28,4 +28,4 @@ def _speeds(ctx, param, value):
               "reduced model (the reduced one is checked against it at the first and last speed).")
 def command(deck, outdir, speeds, modes, exact):
     """Campbell diagram: tracked modes, log decrement and critical speeds over a speed range."""
-    run_and_report("campbell", deck, outdir, "spindle", {"speeds_rpm": speeds, "modes": modes, "exact": exact})
+    run_and_report("campbell", deck, outdir, {"speeds_rpm": speeds, "modes": modes, "exact": exact})

@@ -19,4 +19,4 @@ def command(deck, outdir, simulate, exact):
     """Stability lobe diagram (limit depth of cut against spindle speed) from the deck's 'chatter' section: the
     tool-point FRF from the rotor (at the deck speed or at every speed), tap-test modes or measured FRF files;
     Tlusty's oriented FRF (turning, boring, grinding), Altintas-Budak zero order or semi-discretization (milling)."""
-    run_and_report("chatter", deck, outdir, "milling_spindle", {"simulate": simulate, "exact": exact})
+    run_and_report("chatter", deck, outdir, {"simulate": simulate, "exact": exact})

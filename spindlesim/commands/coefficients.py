@@ -13,4 +13,4 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
               help="Spin speed [rpm], >= 0 (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Eight K/C coefficients at the thermal equilibrium of every three_lobe/plain bearing."""
-    run_and_report("coefficients", deck, outdir, "spindle", {"speed_rpm": speed_rpm})
+    run_and_report("coefficients", deck, outdir, {"speed_rpm": speed_rpm})

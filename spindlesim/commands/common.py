@@ -11,6 +11,8 @@ from typing import Callable
 
 import click
 
+from .exits import EXIT_DECK_ERROR, exit_code_of
+
 log = logging.getLogger("spindlesim")
 
 deck_argument = click.argument("deck", required=False, type=click.Path(dir_okay=False, path_type=Path))
@@ -50,20 +52,6 @@ def load_or_default(deck: Path | None, default_name: str):
     return loaded
 
 
-def exit_code_of(exc: BaseException) -> int:
-    """A failure's exit code: 2 where the input describes a rotor that cannot be solved as given (not held,
-    stiffnesses apart by a unit mistake, a fluid film at rest), else 1 (a solver failure)."""
-    from ..analysis.operating import SingularRotorError
-    from ..bearings.base import SpeedRequiredError
-
-    seen: BaseException | None = exc
-    while seen is not None:  # through the chain: a bearing's failure wrapped by the solver that met it
-        if isinstance(seen, (SingularRotorError, SpeedRequiredError)):
-            return 2
-        seen = seen.__cause__
-    return 1
-
-
 def unit_hint(loaded) -> str:
     """Appended to a solver failure of a deck with plausibility warnings: they are the likely cause."""
     n = len(loaded.warnings)
@@ -78,14 +66,14 @@ def report_deck_error(exc, note: str = "") -> None:
     if ctx is not None and ctx.meta.get("spindlesim.report") == "json":
         click.echo(json.dumps({"errors": [{"file": i.file, "line": i.line, "column": i.col, "key": i.path,
                                            "message": i.message, "severity": i.severity} for i in exc.issues],
-                               "exit_code": 2}))
+                               "exit_code": EXIT_DECK_ERROR}))
     for issue in exc.issues:
         click.echo(str(issue), err=True)
     total = getattr(exc, "total", len(exc.issues))
     if total > len(exc.issues):
         click.echo(f"... and {total - len(exc.issues)} more", err=True)
     click.echo(f"spindlesim: {total} error(s) in the deck{note}; nothing was written.", err=True)
-    sys.exit(2)
+    sys.exit(EXIT_DECK_ERROR)
 
 
 def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
@@ -102,7 +90,7 @@ def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
     except OSError as exc:
         click.echo(f"spindlesim: cannot write to the output folder {out}: {exc.strerror or exc}; nothing was "
                    "computed (give a writable folder with -o)", err=True)
-        sys.exit(2)
+        sys.exit(EXIT_DECK_ERROR)
     return out
 
 
@@ -175,22 +163,24 @@ def _json_default(v):
     return str(v)
 
 
-def run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
-    """Load, run analysis ``name``, print what was written; errors become messages, not tracebacks.
+def run_and_report(name: str, deck: Path | None, outdir: Path | None, options: dict) -> None:
+    """Load DECK (or the embedded deck the registry names for ``name``), run analysis ``name``, print what
+    was written; errors become messages, not tracebacks.
 
     From the ``spindlesim`` program the figures are drawn in a figure process started here, before
     anything imports numpy (spindlesim/output/drawing.py)."""
     from ..output.drawing import figure_process
+    from ..registry import analysis
 
     with figure_process():
-        _run_and_report(name, deck, outdir, default_name, options)
+        _run_and_report(name, deck, outdir, analysis(name).deck, options)
 
 
 def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
     import gc
 
     from ..runs import run_analysis, run_info_for
-    from ..runs.status import EXIT_INTERRUPTED, IncompleteRun
+    from ..runs.status import IncompleteRun
     from ..deck import DeckError
 
     loaded = load_or_default(deck, default_name)
@@ -206,20 +196,22 @@ def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_n
     except IncompleteRun as exc:  # the files are written, marked complete = False
         close()
         print_results(exc.paths)
+        code = exit_code_of(exc)
         click.echo(f"spindlesim {name}: {exc.reason}; the files are marked complete = False "
-                   f"(exit code {exc.exit_code})", err=True)
-        sys.exit(exc.exit_code)
-    except KeyboardInterrupt:  # before or after the part of the run that saves what it computed
+                   f"(exit code {code})", err=True)
+        sys.exit(code)
+    except KeyboardInterrupt as exc:  # before or after the part of the run that saves what it computed
         close()
-        click.echo(f"spindlesim {name}: interrupted (exit code {EXIT_INTERRUPTED})", err=True)
-        sys.exit(EXIT_INTERRUPTED)
+        code = exit_code_of(exc)
+        click.echo(f"spindlesim {name}: interrupted (exit code {code})", err=True)
+        sys.exit(code)
     # --- end run status ---
     except (ValueError, ArithmeticError, RuntimeError) as exc:  # numpy's LinAlgError is a ValueError
         close()
         fail(f"spindlesim {name}: {exc}{unit_hint(loaded)}", exit_code_of(exc))
     except OSError as exc:  # a file that cannot be written (disk full, a directory in the way, permissions)
         close()
-        fail(f"spindlesim {name}: cannot write the results: {exc}", 1)
+        fail(f"spindlesim {name}: cannot write the results: {exc}", exit_code_of(exc))
     close()
     print_results(paths)
 

@@ -16,5 +16,5 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
 @click.option("--ny", type=click.IntRange(min=8), default=None, help="Cells along the roller.")
 def command(deck, outdir, load_N, tilt_deg, nx, ny):
     """Half-space contact pressure (DC-FFT + conjugate gradients): map, centre-line, half-width."""
-    run_and_report("contact", deck, outdir, "contact",
+    run_and_report("contact", deck, outdir,
                    {"load_N": load_N, "tilt_deg": tilt_deg, "nx": nx, "ny": ny})

@@ -16,5 +16,5 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
 @click.option("--no-sweeps", is_flag=True, default=False, help="Skip the preload and radial-load sweeps.")
 def command(deck, outdir, preload_um, speed_rpm, no_sweeps):
     """Load distribution per row, reactions, 5x5 stiffness; stiffness against preload and radial load."""
-    run_and_report("dtrb", deck, outdir, "dtrb",
+    run_and_report("dtrb", deck, outdir,
                    {"preload_um": preload_um, "speed_rpm": speed_rpm, "sweeps": not no_sweeps})

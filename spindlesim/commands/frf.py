@@ -11,4 +11,4 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
               help="Spin speed [rpm], >= 0 (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Complex receptance between the deck's frf input and output (magnitude/phase, real/imaginary)."""
-    run_and_report("frf", deck, outdir, "spindle", {"speed_rpm": speed_rpm})
+    run_and_report("frf", deck, outdir, {"speed_rpm": speed_rpm})

@@ -12,4 +12,4 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
 @click.option("--modes", type=click.IntRange(min=1), default=None, help="Number of modes (default: deck, 8).")
 def command(deck, outdir, speed_rpm, modes):
     """Damped modes from the state-space eigenproblem (QR): frequency, damping, whirl, shapes."""
-    run_and_report("modal", deck, outdir, "spindle", {"speed_rpm": speed_rpm, "modes": modes})
+    run_and_report("modal", deck, outdir, {"speed_rpm": speed_rpm, "modes": modes})

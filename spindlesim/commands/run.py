@@ -2,37 +2,40 @@ import sys
 
 import click
 
+from ..registry import default_decks, default_rows
 from .common import deck_argument, load_or_default, outdir_option, report_options, resolve_outdir
 
 
-@click.command("run")
+def _help() -> str:
+    """The command's help; its table of what runs without an ``analyses`` list is the registry's."""
+    rows = [(", ".join(names), needs) for names, needs in default_rows()]
+    width = max(len(names) for names, _ in rows) + 3
+    return _HELP.format(rows="\n".join(f"  {names.ljust(width)}{needs}" for names, needs in rows))
+
+
+_HELP = """The analyses the deck lists under 'analyses', in that order; without that list, every analysis the
+deck has the sections for, in this order:
+
+\b
+{rows}
+
+A sweep section is run by `spindlesim sweep`, not here; a deck with nothing to run is a deck error.
+Without DECK: the embedded deck 'spindle' (`spindlesim decks`).
+
+Prints the written paths and a short summary of each file's key results, and writes report.html
+into the output folder: one self-contained page (figures embedded) with the provenance, each
+analysis's key results and figures, failures and warnings, to open in a browser or print.
+Exit codes: 0 every analysis finished, 1 one failed (the others still run), 2 deck error, 3 one
+ran but is incomplete (its files are marked complete = False), 130 interrupted (Ctrl-C: the
+analyses not yet started are not run)."""
+
+
+@click.command("run", help=_help())
 @deck_argument
 @outdir_option
 @report_options
 @click.option("--no-report", is_flag=True, help="Do not write report.html (the HDF5 and PNG files only).")
 def command(deck, outdir, no_report):
-    """The analyses the deck lists under 'analyses', in that order; without that list, every analysis the
-    deck has the sections for, in this order:
-
-    \b
-      thermal, coefficients          fluid-film bearings (type three_lobe or plain) and operating; thermal alone: a spindle_thermal section and operating
-      static, modal, campbell, frf   a rotor (shaft or journal) and operating
-      unbalance                      a rotor, operating and an unbalance section
-      transient                      a rotor, operating and a rotor_transient section; or a transient section
-      bearing                        a bearing section
-      dtrb                           a dtrb section
-      contact                        a contact section
-      chatter                        a chatter section
-
-    A sweep section is run by `spindlesim sweep`, not here; a deck with nothing to run is a deck error.
-    Without DECK: the embedded deck 'spindle' (`spindlesim decks`).
-
-    Prints the written paths and a short summary of each file's key results, and writes report.html
-    into the output folder: one self-contained page (figures embedded) with the provenance, each
-    analysis's key results and figures, failures and warnings, to open in a browser or print.
-    Exit codes: 0 every analysis finished, 1 one failed (the others still run), 2 deck error, 3 one
-    ran but is incomplete (its files are marked complete = False), 130 interrupted (Ctrl-C: the
-    analyses not yet started are not run)."""
     from ..output.drawing import figure_process
 
     with figure_process():  # before numpy is imported (spindlesim/output/drawing.py)
@@ -41,12 +44,13 @@ def command(deck, outdir, no_report):
 
 def _run(deck, outdir, report: bool = True) -> None:
     from ..runs import default_analyses, run_analysis, run_info_for
-    from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, IncompleteRun
+    from ..runs.status import IncompleteRun
     from ..deck import DeckError
     from ..output.report import RunReport
     from .common import print_results, report_deck_error, unit_hint
+    from .exits import outcome_code
 
-    loaded = load_or_default(deck, "spindle")
+    loaded = load_or_default(deck, default_decks()["run"])
     names = loaded.deck.analyses or default_analyses(loaded)
     if not names:
         from ..deck.errors import DeckIssue
@@ -82,29 +86,31 @@ def _run(deck, outdir, report: bool = True) -> None:
     if report and not _write_report(book, written):
         failed.append("report")
     print_results(written)
+    code = outcome_code(failed=bool(failed), incomplete=bool(incomplete))
     if failed:
-        click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {EXIT_FAILED})", err=True)
-        sys.exit(EXIT_FAILED)
-    if incomplete:
-        click.echo(f"spindlesim run: incomplete: {', '.join(incomplete)} (exit code {EXIT_INCOMPLETE})", err=True)
-        sys.exit(EXIT_INCOMPLETE)
+        click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {code})", err=True)
+    elif incomplete:
+        click.echo(f"spindlesim run: incomplete: {', '.join(incomplete)} (exit code {code})", err=True)
+    if code:
+        sys.exit(code)
 
 
 def _stop(names: list, name: str, written: list, book=None) -> None:
     """Ctrl-C: the analyses after ``name`` are not started; the report says so; what was written is
     listed; exit code 130."""
-    from ..runs.status import EXIT_INTERRUPTED
     from ..sweep.execution import sigint_ignored
     from .common import print_results
+    from .exits import outcome_code
 
     rest = names[names.index(name) + 1:]
+    code = outcome_code(interrupted=True)
     click.echo(f"spindlesim run: interrupted during {name}" + (f"; not run: {', '.join(rest)}" if rest else "")
-               + f" (exit code {EXIT_INTERRUPTED})", err=True)
+               + f" (exit code {code})", err=True)
     with sigint_ignored():
         if book is not None:
             _write_report(book, written)
         print_results(written)
-    sys.exit(EXIT_INTERRUPTED)
+    sys.exit(code)
 
 
 def _write_report(book, written: list) -> bool:

@@ -11,4 +11,4 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
               help="Spin speed [rpm], >= 0 (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Static deflection K^-1 Q, slopes, bearing reactions and static stiffness."""
-    run_and_report("static", deck, outdir, "spindle", {"speed_rpm": speed_rpm})
+    run_and_report("static", deck, outdir, {"speed_rpm": speed_rpm})

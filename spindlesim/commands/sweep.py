@@ -39,7 +39,7 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     from ..deck import DeckError, parse_deck
     from ..sweep import build_cases, parse_set_option, run_sweep
     from ..sweep.cases import parse_values
-    from ..runs.status import EXIT_FAILED, EXIT_INCOMPLETE, EXIT_INTERRUPTED
+    from .exits import EXIT_DECK_ERROR, outcome_code
     from ..sweep.execution import sigint_deferred, sigint_ignored
     from ..sweep.report import plot_overlay, plot_scalars, summary_table, write_summary
     from ..sweep.runner import SweepInterrupted
@@ -67,7 +67,7 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
                             options={"plots": case_plots})
     except (KeyError, ValueError) as exc:
         click.echo(f"spindlesim sweep: {exc.args[0] if exc.args else exc}", err=True)
-        sys.exit(2)
+        sys.exit(EXIT_DECK_ERROR)
     bad = []
     for c in cases:  # validate every case before running any
         try:
@@ -105,18 +105,16 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     for r in not_done:
         if r.get("status") in ("failed", "incomplete"):
             click.echo(f"  case {r.get('index')} {r.get('parameters')}: {r.get('error', '').splitlines()[0]}", err=True)
+    code = outcome_code(failed=any(r.get("status") == "failed" for r in not_done), incomplete=bool(not_done),
+                        interrupted=res.interrupted or getattr(late, "interrupted", False))
     if res.interrupted:
         click.echo(f"sweep: interrupted; sweep.h5 is marked incomplete. Run the same command again to finish "
-                   f"(exit code {EXIT_INTERRUPTED})", err=True)
-        sys.exit(EXIT_INTERRUPTED)
-    if getattr(late, "interrupted", False):
+                   f"(exit code {code})", err=True)
+    elif getattr(late, "interrupted", False):
         click.echo(f"sweep: interrupted after the cases finished; sweep.h5 and its plots are written "
-                   f"(exit code {EXIT_INTERRUPTED})", err=True)
-        sys.exit(EXIT_INTERRUPTED)
-    if any(r.get("status") == "failed" for r in not_done):
-        sys.exit(EXIT_FAILED)
-    if not_done:
-        sys.exit(EXIT_INCOMPLETE)
+                   f"(exit code {code})", err=True)
+    if code:
+        sys.exit(code)
 
 
 def _print_results(paths: list, lines: list[str], data: dict) -> None:

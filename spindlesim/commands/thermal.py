@@ -14,4 +14,4 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
 def command(deck, outdir, speed_rpm):
     """Thermal equilibrium of every three_lobe/plain bearing (heat generated in the film = heat carried by the
     oil + heat through the housing; the effective viscosity at the mean film temperature): thermal.h5."""
-    run_and_report("thermal", deck, outdir, "spindle", {"speed_rpm": speed_rpm})
+    run_and_report("thermal", deck, outdir, {"speed_rpm": speed_rpm})

@@ -28,5 +28,5 @@ def command(deck, outdir, rollers, duration_s, model):
     frequencies; Poincare maps once per revolution and once per characteristic period of each
     bearing.  The summary and the figures say when the response has not settled or the steady
     part is too short to resolve the frequencies they name."""
-    run_and_report("transient", deck, outdir, "transient",
+    run_and_report("transient", deck, outdir,
                    {"rollers": rollers, "duration_s": duration_s, "model": model})

@@ -365,9 +365,6 @@ class RotorTransientSection(DeckModel):
     equilibrium."""
 
 
-AnalysisName = Literal["static", "modal", "campbell", "frf", "unbalance"]
-
-
 def bearing_types() -> dict[str, type[BaseModel]]:
     """Deck model of each bearing type, by its ``type`` tag."""
     return {name: t.entry for name, t in BEARING_TYPES.items()}

@@ -19,6 +19,7 @@ from pydantic import BaseModel, ValidationError
 
 from ..bearings.ball import section as ball_section
 from ..fields import unit_range, unit_text
+from ..registry import ANALYSIS_REGISTRY, analysis_names
 from .document import bearing_types, deck_model, keys_at
 from .errors import DeckError, DeckIssue
 from .limits import MAX_ISSUES, MAX_TEXT_CHARS, work_checks
@@ -27,11 +28,10 @@ from .yamlmarks import load_with_marks, locate, path_str
 
 log = logging.getLogger(__name__)
 
-#: every analysis a deck may list under ``analyses:`` (``spindlesim.runs.RUNS`` runs them)
-ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient", "rotor_transient", "thermal",
-            "coefficients", "bearing", "dtrb", "contact", "chatter")
+#: every analysis a deck may list under ``analyses:`` (spindlesim/registry.py; ``spindlesim.runs.RUNS`` runs them)
+ANALYSES = analysis_names()
 #: analyses of the rotor on its bearings: without a support the stiffness matrix is singular
-SUPPORTED_ANALYSES = ("static", "modal", "campbell", "frf", "unbalance", "transient", "chatter")
+SUPPORTED_ANALYSES = tuple(a.name for a in ANALYSIS_REGISTRY if a.supported)
 #: bearing types that act on x and y only (no tilt or axial stiffness)
 RADIAL_ONLY = ("linear", "three_lobe", "plain", "roller")
 #: columns of a shaft, holder or tool row

@@ -1,24 +1,11 @@
 """The embedded decks (``<name>.yaml`` data files) and which command runs which one when given no DECK."""
 
-#: command -> the embedded deck it runs when given no DECK.  The commands name their deck where they call
-#: ``commands.common.load_or_default`` / ``run_and_report``; ``spindlesim decks`` lists this table, and
-#: tests/cli/test_decks_command.py checks that it and the commands agree.
-DEFAULT_DECKS: dict[str, str] = {
-    "static": "spindle",
-    "modal": "spindle",
-    "campbell": "spindle",
-    "frf": "spindle",
-    "unbalance": "spindle",
-    "thermal": "spindle",
-    "coefficients": "spindle",
-    "transient": "transient",
-    "bearing": "bearing",
-    "dtrb": "dtrb",
-    "chatter": "milling_spindle",
-    "contact": "contact",
-    "run": "spindle",
-    "sweep": "spindle",
-}
+from ..registry import default_decks
+
+#: command -> the embedded deck it runs when given no DECK (from the registry, spindlesim/registry.py;
+#: ``commands.common.run_and_report`` loads it).  ``spindlesim decks`` lists this table, and
+#: tests/cli/test_decks_command.py checks that it and the deck each command loads agree.
+DEFAULT_DECKS: dict[str, str] = default_decks()
 
 
 def commands_using(deck: str) -> list[str]:

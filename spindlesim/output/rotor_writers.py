@@ -94,13 +94,19 @@ def _campbell_data(g: str, r: CampbellResult, full: bool) -> dict:
 
 def write_campbell(path: Path, run: RunInfo, r: CampbellResult, frozen: CampbellResult | None = None,
                    frozen_rpm: float | None = None, cold: CampbellResult | None = None,
-                   stiffness: dict | None = None) -> Path:
+                   stiffness: dict | None = None, operating_rpm: float | None = None) -> Path:
     """campbell.h5; with the spindle's thermal model (``cold``): /campbell/cold, the diagram of the bearings as
-    assembled at the same speeds, and /campbell/bearing_stiffness_{thermal,cold}_N_m [speed, bearing] (K_xx)."""
+    assembled at the same speeds, and /campbell/bearing_stiffness_{thermal,cold}_N_m [speed, bearing] (K_xx).
+    /campbell's attributes hold the stability threshold (``stable``; ``first_unstable`` [speed index, mode
+    index] when a mode is unstable) and the deck's operating speed (``operating_speed_rpm``, when positive)."""
     data = _campbell_data("/campbell", r, True)
     attrs = {"/campbell": {"tracking": "MAC between consecutive speeds",
                            "bearings": "linearised at the static state of every speed",
-                           "model": r.model}}
+                           "model": r.model, "stable": r.first_unstable is None}}
+    if r.first_unstable is not None:
+        attrs["/campbell"]["first_unstable"] = np.array(r.first_unstable, dtype=np.int64)
+    if operating_rpm is not None and operating_rpm > 0:
+        attrs["/campbell"]["operating_speed_rpm"] = float(operating_rpm)
     if r.crossings is not None:
         attrs["/campbell/crossings"] = crossing_attrs(r.crossings)
     if frozen is not None:

@@ -83,7 +83,8 @@ def run_campbell(loaded, outdir, run, opts, progress):
         stiffness = bearing_stiffness(points, cold_points, res.speed_rpm)
     if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
         run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
-    paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm, cold, stiffness)]
+    paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm, cold, stiffness,
+                            operating_rpm=d.operating.speed_rpm)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None))
         if frozen is not None:

@@ -1,13 +1,9 @@
-"""How a run ended, and the exit codes the commands map it to.
+"""How a run ended.
 
 A run that wrote its files but did not finish (the integration stopped early, or the user
 pressed Ctrl-C) raises :class:`IncompleteRun` *after* writing them: the files carry
 ``complete = False`` and the reason, the exception carries the paths.  The commands turn it
-into an exit code (README, "Exit codes"):
-
-    0    finished                          2    deck error, nothing run
-    1    solver failure (nothing written)  3    ran but incomplete (files marked complete = False)
-    130  interrupted (SIGINT / Ctrl-C; what was computed is written, marked incomplete)
+into an exit code (3, or 130 when interrupted) with the one map of spindlesim/commands/exits.py.
 
 Also here: removal of the temporary files (``<name>.<random>.tmp``, ``.tmp.png``) that an
 atomic writer killed mid-write leaves next to its output.
@@ -24,12 +20,6 @@ from typing import Iterable
 
 log = logging.getLogger(__name__)
 
-EXIT_OK = 0
-EXIT_FAILED = 1
-EXIT_DECK_ERROR = 2
-EXIT_INCOMPLETE = 3
-EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for a Ctrl-C'd program
-
 #: what the transient engine writes as the reason of a run stopped by KeyboardInterrupt
 _INTERRUPT_REASON = re.compile(r"^\s*interrupted by the user", re.IGNORECASE)
 
@@ -42,10 +32,6 @@ class IncompleteRun(Exception):
         self.reason = reason
         self.paths = [Path(p) for p in paths]
         self.interrupted = interrupted
-
-    @property
-    def exit_code(self) -> int:
-        return EXIT_INTERRUPTED if self.interrupted else EXIT_INCOMPLETE
 
 
 def is_interrupt(result) -> bool:

@@ -15,6 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..registry import ANALYSIS_REGISTRY
+
 #: name suffix -> unit, longest first (attribute names carry their unit: speed_rpm, load_N, area_m2)
 _SUFFIX_UNITS = (("_Ns_m", "N s/m"), ("_N_m", "N/m"), ("_m_N", "m/N"), ("_m3_s", "m^3/s"), ("_W_K", "W/K"),
                  ("_Pa_s", "Pa s"), ("_m_s", "m/s"), ("_g_mm", "g mm"), ("_Nm", "N m"), ("_hz", "Hz"),
@@ -22,29 +24,15 @@ _SUFFIX_UNITS = (("_Ns_m", "N s/m"), ("_N_m", "N/m"), ("_m_N", "m/N"), ("_m3_s",
                  ("_deg", "deg"), ("_um", "um"), ("_mm", "mm"), ("_m", "m"), ("_N", "N"), ("_s", "s"), ("_W", "W"),
                  ("_C", "degC"), ("_kg", "kg"), ("_J", "J"))
 
-#: the derived scalars' units
-DERIVED_UNITS = {"modal/f{k}_hz": "Hz", "modal/zeta{k}": "1", "frf/peak_m_N": "m/N", "frf/peak_frequency_hz": "Hz",
-                 "campbell/first_critical_rpm": "rpm", "static/max_displacement_m": "m",
-                 "transient/dominant_frequency_hz": "Hz", "transient/dominant_amplitude_m": "m",
-                 "transient/steady_amplitude_x_m": "m", "transient/steady_amplitude_y_m": "m",
-                 "contact/edge_singular": "1", "contact/converged_max_pressure_Pa": "Pa",
-                 "unbalance/max_amplitude_m": "m"}
+#: the derived scalars' units (each analysis's, spindlesim/registry.py)
+DERIVED_UNITS = {k: u for a in ANALYSIS_REGISTRY for k, u in a.derived_units}
 
-#: the key results of each analysis, most important first ("*" matches one path part);
+#: the key results of each analysis, most important first ("*" matches one path part; spindlesim/registry.py);
 #: the summary plot draws these (when finite in some case), then other scalars that vary
-KEY_SCALARS = (
-    "transient/dominant_amplitude_m", "transient/steady_amplitude_x_m", "transient/steady_amplitude_y_m",
-    "transient/dominant_frequency_hz", "contact/converged_max_pressure_Pa", "contact@applied_load_N",
-    "modal/f1_hz", "modal/f2_hz", "modal/f3_hz", "modal/f4_hz", "modal/zeta1", "modal/zeta2",
-    "campbell/first_critical_rpm", "frf/peak_m_N", "frf/peak_frequency_hz",
-    "static/max_displacement_m", "static/static_stiffness_N_m*", "unbalance/max_amplitude_m",
-    "coefficients/*/K_N_m[0,0]", "coefficients/*/K_N_m[1,1]", "coefficients/*/C_Ns_m[0,0]",
-    "coefficients/*/C_Ns_m[1,1]", "coefficients/*/eccentricity_ratio", "coefficients/*/temperature_mean_C",
-    "thermal/*/temperature_mean_C", "thermal/*/eccentricity_ratio", "contact@max_pressure_Pa",
-)
+KEY_SCALARS = tuple(k for a in ANALYSIS_REGISTRY for k in a.key_scalars)
 #: bookkeeping, never plotted
 _NOT_RESULTS = re.compile(r"(iterations|wall_time|elapsed|record_node|step_s|sample_rate|settle_s|@row$|@roller$|"
-                          r"@node$|@rollers$|frequency_hz\.|poincare)")
+                          r"@node$|@rollers$|frequency_hz\.|poincare|@operating_speed_rpm$)")
 
 
 def unit_from_name(name: str) -> str:
@@ -183,11 +171,6 @@ def case_scalars(paths: list[Path]) -> dict[str, float]:
     return case_results(paths)[0]
 
 
-# curves drawn side by side for the cases of a sweep: analysis -> (file, x dataset, y dataset, x label, y label)
-OVERLAYS = {
-    "rotor_transient": ("transient.h5", "transient/spectrum/frequency_hz", "transient/spectrum/amplitude_m",
-                        "frequency [Hz]", "spectrum amplitude [m]"),
-    "transient": ("transient.h5", "transient/spectrum/frequency_hz", "transient/spectrum/amplitude_m",
-                  "frequency [Hz]", "spectrum amplitude [m]"),
-    "frf": ("frf.h5", "frf/frequency_hz", "frf/receptance_m_N", "frequency [Hz]", "|receptance| [m/N]"),
-}
+# curves drawn side by side for the cases of a sweep: analysis (aliases included) -> (file, x dataset,
+# y dataset, x label, y label)
+OVERLAYS = {n: a.overlay for a in ANALYSIS_REGISTRY if a.overlay for n in (a.name, *a.aliases)}

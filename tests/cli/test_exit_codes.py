@@ -1,4 +1,4 @@
-"""Exit codes (spindlesim/runs/status.py): 0 finished, 1 failed, 2 deck error, 3 ran but incomplete,
+"""Exit codes (spindlesim/commands/exits.py): 0 finished, 1 failed, 2 deck error, 3 ran but incomplete,
 130 interrupted.  The SIGINT tests signal a real `spindlesim` process once it is integrating."""
 
 import os

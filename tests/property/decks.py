@@ -120,6 +120,7 @@ def check_run(name: str, loaded: LoadedDeck, outdir: Path) -> int:
     """Run analysis ``name`` without plots; the exit code the command would give (0, 1 or 2)."""
     from spindlesim.runs import run_analysis
     from spindlesim.runs.status import IncompleteRun
+    from spindlesim.commands.exits import exit_code_of
 
     with time_limit(RUN_SECONDS, f"the {name} analysis"):
         try:
@@ -132,7 +133,7 @@ def check_run(name: str, loaded: LoadedDeck, outdir: Path) -> int:
             code = 2
         except IncompleteRun as exc:
             assert str(exc).strip()
-            code = exc.exit_code
+            code = exit_code_of(exc)
         except RecursionError:
             raise
         except REPORTED as exc:

@@ -16,6 +16,7 @@ import pytest
 from click.testing import CliRunner
 
 from spindlesim.cli import main
+from spindlesim.commands.exits import exit_code_of
 from spindlesim.deck import default_deck
 from spindlesim.runs import run_info_for
 from spindlesim.sweep import SweepInterrupted, build_cases, run_sweep
@@ -143,7 +144,7 @@ def test_interrupt_while_waiting_records_no_unfinished_case_as_done(tmp_path, sc
     with pytest.raises(SweepInterrupted) as info:
         run_sweep(cases, tmp_path / "s", workers=1, scheduler=scheduler, progress=ctrl_c)
     res = info.value.result
-    assert res.interrupted and not res.complete and info.value.exit_code == 130
+    assert res.interrupted and not res.complete and exit_code_of(info.value) == 130
     assert 1 <= res.count(DONE) < len(cases)
     assert res.count("interrupted") + res.count("not run") == len(cases) - res.count(DONE)
     for c, r in zip(cases, res.records):

@@ -19,6 +19,7 @@ ROOT = Path(spindlesim.__file__).parent
 #: rank of each top-level package or module; imports must go to a strictly lower rank
 RANK = {
     "_cachedirs": -1,  # the package's first act: writable caches for numba and matplotlib (imports neither)
+    "registry": -0.5,  # names and dotted paths of every analysis and command (imports nothing of spindlesim)
     "__init__": 0, "fields": 0, "lazy": 0,
     "contact": 1,
     "thermal": 1.5,  # heat transfer, heat generation, growth: pure physics the bearings and analyses call
