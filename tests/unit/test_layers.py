@@ -1,8 +1,9 @@
 """The package layers import one way (issue "One spindle model", item: layers that flow one way).
 
-Data flows deck -> model -> fe -> bearings -> analysis -> runs (files, plots) -> CLI.  As imports that
-is the ranking below: a package may import only packages of a lower rank, so no cycle can form and
-the physics (fe, bearings, analysis) never depends on how a deck is written or on files and plots.
+Data flows deck -> model -> fe -> bearings -> analysis -> output (files, plots) -> runs -> sweep ->
+commands -> CLI.  As imports that is the ranking below: a package may import only packages of a lower
+rank, so no cycle can form and the physics (fe, bearings, analysis) never depends on how a deck is
+written or on files and plots.
 The test parses every module's imports (no import is executed) and names each offending line.
 """
 
@@ -171,9 +172,10 @@ def _writes_hdf5(path: Path, module: str | None = None) -> list[str]:
     return bad
 
 
-def test_no_run_writes_hdf5_itself():
-    """runs/ computes and hands its results to the writers of output/: no run imports h5py or lays out a file."""
-    bad = [b for path in sorted((ROOT / "runs").rglob("*.py")) for b in _writes_hdf5(path)]
+def test_no_run_or_command_writes_hdf5_itself():
+    """runs/ computes and hands its results to the writers of output/ (and commands/ calls the runs): no run or
+    command imports h5py or lays out a file."""
+    bad = [b for layer in ("runs", "commands") for path in sorted((ROOT / layer).rglob("*.py")) for b in _writes_hdf5(path)]
     assert not bad, "HDF5 written outside the writers of output/:\n" + "\n".join(bad)
 
 
