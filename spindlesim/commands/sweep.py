@@ -1,8 +1,6 @@
 """``spindlesim sweep DECK``: a parameter study over any deck value, on a process pool or Dask."""
 
-import logging
 import sys
-from collections import Counter
 
 import click
 
@@ -35,26 +33,17 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     incomplete (none failed), 130 interrupted."""
     from pathlib import Path
 
-    from ..runs import analyses, run_info_for
-    from ..deck import DeckError, parse_deck
-    from ..sweep import build_cases, parse_set_option, run_sweep
-    from ..sweep.cases import parse_values
+    from ..runs import analyses
+    from ..deck import DeckError
+    from ..sweep import build_cases
+    from ..sweep.study import case_deck_issues, outcome_lines, run_study, study_parameters
     from .exits import EXIT_DECK_ERROR, outcome_code
-    from ..sweep.execution import sigint_deferred, sigint_ignored
-    from ..sweep.report import plot_overlay, plot_scalars, summary_table, write_summary
-    from ..sweep.runner import SweepInterrupted
     from .common import report_deck_error
 
     loaded = load_or_default(deck, "spindle")
     sw = loaded.deck.sweep
-    params: dict = {}
-    if sw is not None:
-        for path, spec in sw.parameters.items():
-            params[path] = list(spec) if isinstance(spec, list) else parse_values(f"{spec.start}:{spec.stop}:{spec.count}")
     try:
-        for s in sets:
-            path, values = parse_set_option(s)
-            params[path] = values
+        params = study_parameters(sw, sets)
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="--set") from None
     analysis = analysis or (sw.analysis if sw is not None else None)
@@ -68,12 +57,7 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     except (KeyError, ValueError) as exc:
         click.echo(f"spindlesim sweep: {exc.args[0] if exc.args else exc}", err=True)
         sys.exit(EXIT_DECK_ERROR)
-    bad = []
-    for c in cases:  # validate every case before running any
-        try:
-            parse_deck(c.deck_text, f"{loaded.source} [case {c.index}: {c.parameters}]")
-        except DeckError as exc:
-            bad.extend(exc.issues)
+    bad = case_deck_issues(loaded, cases)  # every case's deck is validated before any runs
     if bad:
         report_deck_error(DeckError(bad))
     out = resolve_outdir(Path(outdir) if outdir else None, loaded, "sweep")
@@ -82,29 +66,11 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
         click.echo(f"sweep: {done}/{total} cases, about {eta:.0f} s left", err=True)
 
     click.echo(f"sweep: {len(cases)} cases of {analysis} into {out}", err=True)
-    try:
-        res = run_sweep(cases, out, workers=workers, scheduler=scheduler, progress=progress)
-    except SweepInterrupted as exc:
-        res = exc.result
-    # every case is recorded: a Ctrl-C now waits until sweep.h5, its plots and the table are out
-    with sigint_ignored() if res.interrupted else sigint_deferred() as late:
-        run = run_info_for(loaded, " ".join(sys.argv))
-        title = f"{loaded.deck.title}\n{_operating_text(loaded.deck)}{len(cases)} cases of {analysis}"
-        paths = [write_summary(res, run, analysis), plot_scalars(res, out / "sweep_scalars.png", title=title),
-                 plot_overlay(res, analysis, out / f"sweep_{analysis}_overlay.png", title=title)]
-        try:
-            lines, data = summary_table(res, max_scalars=4)
-        except Exception as exc:  # a summary must never hide the results themselves
-            logging.getLogger("spindlesim").warning("sweep results table unavailable: %s", exc)
-            lines, data = [], {}
-        _print_results([p for p in paths if p is not None], lines, data)
+    res, late = run_study(loaded, cases, analysis, out, workers=workers, scheduler=scheduler, progress=progress,
+                          command_line=" ".join(sys.argv), show=_print_results)
     not_done = [r for r in res.records if r.get("status") != "done"]
-    counts = ", ".join(f"{n} {s}" for s, n in Counter(r.get("status") for r in not_done).items())
-    click.echo(f"sweep: {len(res.ran)} run, {len(res.skipped)} already finished"
-               + (f", not done: {counts}" if counts else ", 0 failed"), err=True)
-    for r in not_done:
-        if r.get("status") in ("failed", "incomplete"):
-            click.echo(f"  case {r.get('index')} {r.get('parameters')}: {r.get('error', '').splitlines()[0]}", err=True)
+    for line in outcome_lines(res):
+        click.echo(line, err=True)
     code = outcome_code(failed=any(r.get("status") == "failed" for r in not_done), incomplete=bool(not_done),
                         interrupted=res.interrupted or getattr(late, "interrupted", False))
     if res.interrupted:
@@ -115,7 +81,6 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
                    f"(exit code {code})", err=True)
     if code:
         sys.exit(code)
-
 
 def _print_results(paths: list, lines: list[str], data: dict) -> None:
     """The written paths, then the per-case table (or both as JSON with --json; paths only with -q)."""
@@ -135,13 +100,3 @@ def _print_results(paths: list, lines: list[str], data: dict) -> None:
         click.echo("\nsweep.h5:")
         for line in lines:
             click.echo(f"  {line}")
-
-
-def _operating_text(deck) -> str:
-    """The deck's operating point (speed, load, oil temperature) for the summary titles, or ""."""
-    from ..deck.describe import operating_text
-
-    rig = getattr(deck, "transient", None)
-    speed = deck.operating.speed_rpm if deck.operating is not None else getattr(rig, "speed_rpm", None)
-    text = ", ".join(p for p in (f"{speed:g} rpm" if speed is not None else "", operating_text(deck)) if p)
-    return f"base deck {text}; " if text else ""

@@ -1,7 +1,6 @@
 """Deck section ``contact:`` (issue 5): roller/raceway or ball contact pressure.
 
-Keys carry their units; the conversion to SI happens in
-:func:`spindlesim.runs.contact.contact_inputs`.  Either ``load_N`` (the roller load
+Keys carry their units; :func:`solve_from_section` converts them to SI and solves the contact.  Either ``load_N`` (the roller load
 directly) or ``most_loaded_roller`` (Stribeck's estimate from a bearing's radial load) is
 given; ``ball`` replaces the roller by a point contact (for checking against Hertz).
 
@@ -19,11 +18,18 @@ given; ``ball`` replaces the roller by a point contact (for checking against Her
 
 from __future__ import annotations
 
-from typing import Annotated, Literal, Optional
+import logging
+import math
+from typing import TYPE_CHECKING, Annotated, Literal, Optional
 
 from pydantic import Field, model_validator
 
 from ..fields import DeckModel, NonNegFloat, PositiveFloat
+
+if TYPE_CHECKING:
+    from .result import ContactResult
+
+log = logging.getLogger(__name__)
 
 GridSize = Annotated[int, Field(ge=8, le=4096)]
 #: most cells of a grid, nx * ny: the influence sums (DC-FFT on 2nx x 2ny) take about 10 s at this size
@@ -128,3 +134,56 @@ class ContactSection(DeckModel):
             raise ValueError("end_radius_mm must be at most half the roller length")
         return self
 
+
+
+# ----------------------------------------------------------------------------------------------
+# deck units -> SI: the solvers take metres, pascals and radians (imported here when asked for, so that
+# loading a deck does not import them)
+
+
+def solve_from_section(sec: ContactSection, options: dict | None = None) -> ContactResult:
+    """Convert a validated ``contact:`` section (deck units) to SI and solve it.  ``options`` may override
+    ``load_N``, ``tilt_deg``, ``nx``, ``ny`` (None: the deck's)."""
+    from .hertz import stribeck_max_roller_load
+    from .problems import solve_point_contact
+
+    opts = {k: v for k, v in (options or {}).items() if v is not None}
+    if "load_N" in opts:
+        load = float(opts["load_N"])
+    elif sec.load_N is not None:
+        load = sec.load_N
+    else:
+        m = sec.most_loaded_roller
+        load = stribeck_max_roller_load(m.radial_load_N, m.rollers, line_contact_=sec.ball is None)
+        log.info("most loaded element (Stribeck 4.08 Fr/Z): %.4g N", load)
+    nx = int(opts.get("nx", sec.grid.nx))
+    ny = int(opts.get("ny", sec.grid.ny))
+    rm, wm = sec.roller_material, sec.raceway_material
+    if sec.ball is not None:
+        ry = sec.ball.ry_mm if sec.ball.ry_mm is not None else sec.ball.rx_mm
+        return solve_point_contact(load, 1e-3 * sec.ball.rx_mm, 1e-3 * ry,
+                                   E1_Pa=1e9 * rm.E_GPa, nu1=rm.poisson,
+                                   E2_Pa=1e9 * wm.E_GPa, nu2=wm.poisson, n=max(nx, ny))
+    return _solve_roller(sec, load, nx, ny, opts)
+
+
+def _mm_to_m(value: float | None, none: float | None = None) -> float | None:
+    """A length in mm as metres; None as ``none``."""
+    return none if value is None else 1e-3 * value
+
+
+def _solve_roller(sec: ContactSection, load: float, nx: int, ny: int, opts: dict) -> ContactResult:
+    from .problems import solve_roller_contact
+
+    rm, wm = sec.roller_material, sec.raceway_material
+    return solve_roller_contact(
+        load, 1e-3 * sec.roller_radius_mm, 1e-3 * sec.roller_length_mm,
+        raceway_radius_m=_mm_to_m(sec.raceway_radius_mm, math.inf), raceway=sec.raceway,
+        profile=sec.profile,
+        crown_radius_m=_mm_to_m(sec.crown_radius_mm),
+        design_load_N=sec.design_load_N, end_radius_m=1e-3 * sec.end_radius_mm,
+        tilt_rad=math.radians(float(opts.get("tilt_deg", sec.tilt_deg))),
+        roller_E_Pa=1e9 * rm.E_GPa, roller_nu=rm.poisson,
+        raceway_E_Pa=1e9 * wm.E_GPa, raceway_nu=wm.poisson,
+        nx=nx, ny=ny, check_edges=sec.check_edges,
+    )

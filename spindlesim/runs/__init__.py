@@ -1,4 +1,5 @@
-"""Runs: one module per analysis; each reads the deck, calls the physics, writes HDF5 and PNG files.
+"""Runs: one module per analysis; each reads the deck, calls the physics and hands the results to the writers
+and figures of :mod:`spindlesim.output` (HDF5 and PNG files).
 
 The scriptable API the CLI wraps::
 

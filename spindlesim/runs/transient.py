@@ -151,7 +151,7 @@ def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:
     from ..bearings.dtrb.roller_pressure import roller_pressure_under
     from ..contact.plots import pressure_map_figure, roller_profile_figure
     from ..output.figures import save_figure
-    from .contact import write_contact
+    from ..output.contact_writer import write_contact
 
     st = operating_points(loaded).state(rotor.speed_rpm)  # the run's shared static state
     paths: list[Path] = []

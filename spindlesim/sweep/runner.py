@@ -28,7 +28,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
-from ..runs.status import IncompleteRun, file_mode, remove_stale_temporaries
+from ..output.hdf5 import publish
+from ..runs.status import IncompleteRun, remove_stale_temporaries
 from .cases import Case
 from .execution import make_executor, sigint_ignored
 
@@ -40,10 +41,9 @@ DONE, FAILED, INCOMPLETE, INTERRUPTED, NOT_RUN = "done", "failed", "incomplete",
 def _write_json_atomic(path: Path, payload: dict) -> None:
     fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
     try:
-        os.fchmod(fd, file_mode())  # mkstemp makes 0600; the case files are as readable as the rest
         with os.fdopen(fd, "w") as fh:
             json.dump(payload, fh, indent=1, default=str)
-        os.replace(tmp, path)
+        publish(tmp, path)  # mkstemp makes 0600; the case files are as readable as the rest
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)

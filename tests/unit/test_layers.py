@@ -1,8 +1,9 @@
 """The package layers import one way (issue "One spindle model", item: layers that flow one way).
 
-Data flows deck -> model -> fe -> bearings -> analysis -> runs (files, plots) -> CLI.  As imports that
-is the ranking below: a package may import only packages of a lower rank, so no cycle can form and
-the physics (fe, bearings, analysis) never depends on how a deck is written or on files and plots.
+Data flows deck -> model -> fe -> bearings -> analysis -> output (files, plots) -> runs -> sweep ->
+commands -> CLI.  As imports that is the ranking below: a package may import only packages of a lower
+rank, so no cycle can form and the physics (fe, bearings, analysis) never depends on how a deck is
+written or on files and plots.
 The test parses every module's imports (no import is executed) and names each offending line.
 """
 
@@ -52,25 +53,30 @@ def _member(base: list[str], name: str) -> str:
 def _imports(path: Path, module: str | None = None) -> list[tuple[int, str]]:
     """(line, imported spindlesim module) of every import in ``path``; ``module``: its dotted name (by
     default from its place under the package)."""
+    package_parts = _package_parts(path, module)
+    return [(node.lineno, n) for node in _import_nodes(path) for n in _targets(node, package_parts)
+            if n.split(".")[0] == "spindlesim"]
+
+
+def _package_parts(path: Path, module: str | None) -> list[str]:
+    """The dotted parts of the package ``path`` is in (``module``: its dotted name, by default from its place)."""
     if module is None:
         module = ".".join(path.relative_to(ROOT.parent).with_suffix("").parts)
-    package_parts = module.split(".") if path.name == "__init__.py" else module.split(".")[:-1]
-    if path.name == "__init__.py":
-        package_parts = package_parts[:-1]
-    out = []
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-        if isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = package_parts[:len(package_parts) - (node.level - 1)]
-                names = [".".join(base + [node.module])] if node.module else [_member(base, a.name) for a in node.names]
-            else:
-                names = [node.module] if node.module and node.module.split(".")[0] == "spindlesim" else []
-        elif isinstance(node, ast.Import):
-            names = [a.name for a in node.names if a.name.split(".")[0] == "spindlesim"]
-        else:
-            continue
-        out += [(node.lineno, n) for n in names]
-    return out
+    return module.split(".")[:-1]  # a package's __init__ is "<package>.__init__"
+
+
+def _import_nodes(path: Path) -> list[ast.Import | ast.ImportFrom]:
+    return [n for n in ast.walk(ast.parse(path.read_text(encoding="utf-8"))) if isinstance(n, (ast.Import, ast.ImportFrom))]
+
+
+def _targets(node: ast.Import | ast.ImportFrom, package_parts: list[str]) -> list[str]:
+    """The modules an import statement imports, relative ones resolved against ``package_parts``."""
+    if isinstance(node, ast.Import):
+        return [a.name for a in node.names]
+    if not node.level:
+        return [node.module] if node.module else []
+    base = package_parts[:len(package_parts) - (node.level - 1)]
+    return [".".join(base + [node.module])] if node.module else [_member(base, a.name) for a in node.names]
 
 
 def _modules():
@@ -144,3 +150,41 @@ def test_the_probe_check_sees_a_planted_probe(tmp_path):
                        "has_oil = hasattr(bearing, 'oil')\n")
     assert _probes([planted]) == ["planted.py:2: fluid = [b for b in deck.bearings if b.type == 'plain']",
                                   "planted.py:3: has_oil = hasattr(bearing, 'oil')"]
+
+
+#: what a run may take from output/hdf5.py: the provenance record it is given; the layout of its files (datasets,
+#: units, dimensions, attributes) is a writer's of output/ (output/*_writer.py, output/rotor_writers.py)
+RUN_MAY_IMPORT_FROM_HDF5 = {"RunInfo"}
+
+
+def _writes_hdf5(path: Path, module: str | None = None) -> list[str]:
+    """The lines of ``path`` that import h5py, or from spindlesim/output/hdf5.py more than the provenance record."""
+    bad = []
+    parts = _package_parts(path, module)
+    for node in _import_nodes(path):
+        names = {a.name for a in node.names}
+        for target in _targets(node, parts):
+            if target.split(".")[0] == "h5py":
+                bad.append(f"{path.name}:{node.lineno}: imports {target}")
+            elif target == "spindlesim.output.hdf5" and (isinstance(node, ast.Import) or names - RUN_MAY_IMPORT_FROM_HDF5):
+                bad.append(f"{path.name}:{node.lineno}: writes HDF5 with {', '.join(sorted(names))}")
+            elif target == "spindlesim.output" and "hdf5" in names:  # from ..output import hdf5
+                bad.append(f"{path.name}:{node.lineno}: writes HDF5 with hdf5")
+    return bad
+
+
+def test_no_run_or_command_writes_hdf5_itself():
+    """runs/ computes and hands its results to the writers of output/ (and commands/ calls the runs): no run or
+    command imports h5py or lays out a file."""
+    bad = [b for layer in ("runs", "commands") for path in sorted((ROOT / layer).rglob("*.py")) for b in _writes_hdf5(path)]
+    assert not bad, "HDF5 written outside the writers of output/:\n" + "\n".join(bad)
+
+
+def test_the_hdf5_check_sees_a_run_writing_a_file(tmp_path):
+    planted = tmp_path / "planted.py"
+    planted.write_text("import h5py\nfrom ..output.hdf5 import RunInfo\nfrom ..output.hdf5 import Data, write_h5\n"
+                       "from ..output import hdf5\nfrom ..output.contact_writer import write_contact\n"
+                       "import spindlesim.output.hdf5\n")
+    assert _writes_hdf5(planted, "spindlesim.runs.planted") == [
+        "planted.py:1: imports h5py", "planted.py:3: writes HDF5 with Data, write_h5",
+        "planted.py:4: writes HDF5 with hdf5", "planted.py:6: writes HDF5 with spindlesim.output.hdf5"]
