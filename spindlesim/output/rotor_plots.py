@@ -226,7 +226,8 @@ def campbell_thermal_figure(r: CampbellResult, cold: CampbellResult, stiffness: 
 
 
 def _frf_label(r: FrfResult) -> str:
-    return f"node {r.output_node} {r.output_dof} / node {r.input_node} {r.input_dof} at {r.speed_rpm:g} rpm"
+    return (f"response at node {r.output_node} {r.output_dof} / force at node {r.input_node} {r.input_dof}, "
+            f"{r.speed_rpm:g} rpm")
 
 
 def frf_magnitude_phase_figure(r: FrfResult):
@@ -238,7 +239,7 @@ def frf_magnitude_phase_figure(r: FrfResult):
     a1, a2 = fig.subplots(2, 1, sharex=True)
     a1.semilogy(f, np.abs(h) * 1e6)
     a1.set_ylabel("|receptance| [um/N]")
-    a1.set_title("Receptance " + _frf_label(r))
+    a1.set_title("Receptance: " + _frf_label(r))
     a1.grid(True, which="both", alpha=0.3)
     a2.plot(f, np.degrees(np.unwrap(np.angle(h))))  # unwrapped: no false vertical jumps at +-180
     a2.set_ylabel("phase (unwrapped) [deg]")
@@ -255,7 +256,7 @@ def frf_real_imag_figure(r: FrfResult):
     b1, b2 = fig.subplots(2, 1, sharex=True)
     b1.plot(f, h.real * 1e6)
     b1.set_ylabel("real part [um/N]")
-    b1.set_title("Receptance " + _frf_label(r))
+    b1.set_title("Receptance: " + _frf_label(r))
     b1.grid(True, alpha=0.3)
     b2.plot(f, h.imag * 1e6)
     b2.set_ylabel("imaginary part [um/N]")

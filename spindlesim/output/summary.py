@@ -18,6 +18,10 @@ from typing import Any, Callable
 
 import numpy as np
 
+from .numbers import clean, g as _g, with_resolution
+from .summary_bearings import _bearing, _contact, _dtrb
+
+
 def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
     """(file name, lines, data) for every HDF5 file among ``paths`` that has a summary."""
     import h5py
@@ -46,32 +50,34 @@ def _static(f):
     a = g.attrs
     lines, data = [], {"speed_rpm": _f(a["speed_rpm"])}
     F = g["applied_force_N"][:]
-    load = f"Fx {F[0]:.4g} N, Fy {F[1]:.4g} N"
+    load = f"Fx {_g(F[0])} N, Fy {_g(F[1])} N"
     if "applied_axial_force_N" in g:
-        load += f", Fz {_f(g['applied_axial_force_N'][()]):.4g} N"
+        load += f", Fz {_g(_f(g['applied_axial_force_N'][()]))} N"
     lines.append(f"at {data['speed_rpm']:g} rpm under the applied loads (gravity included): {load}")
     data["applied_force_N"] = F.tolist()
+    noise = float(np.max(np.abs(g["displacement_m"][:]), initial=0.0))  # deflections below its noise: 0
     if "static_stiffness_N_m" in g:
         k = _f(g["static_stiffness_N_m"][()])
         node, dof = int(a["stiffness_node"]), str(a["stiffness_dof"])
         i = node - 1
-        disp = g["displacement_m"][i]
+        disp = clean(g["displacement_m"][i], noise)
         lines.append(f"static stiffness at node {node} {dof}: {k / 1e6:.4g} N/um; deflection there "
-                     f"x {disp[0] * 1e6:.4g} um, y {disp[1] * 1e6:.4g} um")
+                     f"x {_g(disp[0] * 1e6)} um, y {_g(disp[1] * 1e6)} um")
         data.update(stiffness_N_m=k, stiffness_node=node, deflection_m=disp.tolist())
     if "tool_tip_stiffness_N_m" in g:
         tip = int(a["tool_tip_node"])
         ks = dict(zip(g["tip_dof"][:].astype(str), g["tool_tip_stiffness_N_m"][:]))
-        disp = g["displacement_m"][tip - 1]
+        disp = clean(g["displacement_m"][tip - 1], noise)
         words = [f"{'axial' if d == 'z' else 'radial'} {d} {v / 1e6:.4g}" for d, v in ks.items()]
         lines.append(f"tool tip (node {tip}) static stiffness: {', '.join(words)} N/um; deflection there "
-                     f"x {disp[0] * 1e6:.4g} um, y {disp[1] * 1e6:.4g} um")
+                     f"x {_g(disp[0] * 1e6)} um, y {_g(disp[1] * 1e6)} um")
         data.update(tool_tip_node=tip, tool_tip_stiffness_N_m={d: float(v) for d, v in ks.items()})
     names = [str(n) for n in g["bearing_name"][:].astype(str)]
     forces = g["bearing_force_N"][:]
     data["bearing_force_N"] = {n: fb.tolist() for n, fb in zip(names, forces)}
-    for n, fb in zip(names, forces):
-        lines.append(f"  bearing {n:12s} reaction " + ", ".join(f"{v:10.4g}" for v in np.ravel(fb)[:5]) + " N")
+    shown = clean(forces, max(float(np.max(np.abs(forces), initial=0.0)), float(np.max(np.abs(F), initial=0.0))))
+    for n, fb in zip(names, shown):  # below the noise of the largest force: 0
+        lines.append(f"  bearing {n:12s} reaction " + ", ".join(f"{_g(v):>10s}" for v in np.ravel(fb)[:5]) + " N")
     return lines, data
 
 
@@ -179,8 +185,8 @@ def _frf(f):
     fr, h = g["frequency_hz"][:], g["receptance_m_N"][:]
     a = g.attrs
     mag = np.abs(h)
-    head = (f"node {int(a['output_node'])} {a['output_dof']} / node {int(a['input_node'])} {a['input_dof']} at "
-            f"{_f(a['speed_rpm']):g} rpm; ")
+    head = (f"response at node {int(a['output_node'])} {a['output_dof']} / force at node {int(a['input_node'])} "
+            f"{a['input_dof']}, {_f(a['speed_rpm']):g} rpm; ")
     data: dict[str, Any] = {"peaks": []}
     if "static_compliance_m_N" in g:
         c0 = _f(g["static_compliance_m_N"][()])
@@ -376,7 +382,7 @@ def _transient(f):
         A = g["spectrum/amplitude_m"][:]
         k = int(np.argmax(np.max(A, axis=1)[1:])) + 1
         df = float(fr[1] - fr[0])
-        lines.append(f"  dominant line {fr[k]:.5g} +/- {df / 2:.2g} Hz, {np.max(A[k]) * 1e6:.4g} um"
+        lines.append(f"  dominant line {with_resolution(fr[k], df / 2, 'Hz')}, {np.max(A[k]) * 1e6:.4g} um"
                      + (" (of a response that has NOT SETTLED)" if settled is False else ""))
         data["dominant_hz"] = float(fr[k])
     elif "spectrum" in g:
@@ -470,96 +476,6 @@ def _chatter(f):
         lines.append(f"  simulation {float(s['speed_rpm']):g} rpm, {float(s['depth_m']) * 1e3:g} mm: {state}"
                      + (f" ({basis})" if basis else ""))
     return lines, data
-
-
-def _stiffness_lines(K) -> list[str]:
-    d = np.diag(np.asarray(K, float))
-    names = ("Kxx", "Kyy", "Kzz", "Ktx", "Kty")[: len(d)]
-    return ["  stiffness " + ", ".join(f"{n} {v / (1e6 if k < 3 else 1.0):.4g}{' N/um' if k < 3 else ' N m/rad'}"
-                                       for k, (n, v) in enumerate(zip(names, d)))]
-
-
-def _bearing(f):
-    g = f["bearing"]
-    a = g.attrs
-    lines = [str(a.get("operating_point", ""))]
-    d = g["displacement"][()]
-    held = set(str(a.get("held_dofs", "")).split(", ")) - {""}
-    dofs, loads = ("x", "y", "z", "theta_x", "theta_y"), ("Fx", "Fy", "Fz", "Mx", "My")
-    shown = [v * s if abs(v * s) >= 5e-5 else 0.0 for v, s in zip(d, (1e6,) * 3 + (1e3,) * 2)]  # round-off: 0
-    lines.append("  displacement " + ", ".join(f"{n} {v:.4g} {'um' if k < 3 else 'mrad'}" + (" (held)" if n in held
-                                               else "") for k, (n, v) in enumerate(zip(dofs, shown))))
-    data = {"displacement": d.tolist()}
-    if held:
-        H = g["holding_load"][()]
-        H = np.where(np.abs(H) > 1e-9 * max(1.0, float(np.max(np.abs(H)))), H, 0.0)
-        lines.append("  holding load " + ", ".join(f"{m} {H[k]:.4g} {'N' if k < 3 else 'N m'}"
-                                                   for k, (n, m) in enumerate(zip(dofs, loads)) if n in held)
-                     + " (what holds the held DOFs; the bearing carries the load plus this)")
-        data["holding_load"] = H.tolist()
-    K = g["stiffness"][()]
-    lines += _stiffness_lines(K)
-    Qi, Qo, p = g["element_load_inner_N"][()], g["element_load_N"][()], g["max_pressure_Pa"][()]
-    ai, ao = g["contact_angle_inner_deg"][()], g["contact_angle_outer_deg"][()]
-    lines.append(f"  largest contact loads {Qi.max():.4g} N inner, {Qo.max():.4g} N outer; contact pressure "
-                 f"{p.max() * 1e-9:.3g} GPa; contact angles {ai.min():.1f}-{ai.max():.1f} deg inner, "
-                 f"{ao.min():.1f}-{ao.max():.1f} deg outer")
-    data.update({"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Qo.max()),
-                 "max_element_load_inner_N": float(Qi.max()), "max_pressure_Pa": float(p.max())})
-    c, used, model = g["race_control_criterion"][()], g["race_control_used"][()], str(a.get("model", ""))
-    count = {"outer": int(np.sum(c == 1)), "inner": int(np.sum(c == -1)), "either": int(np.sum(c == 0))}
-    if model == "auto":
-        model = f"per ball: outer at {int(np.sum(used == 1))}, inner at {int(np.sum(used == -1))}, shared at " \
-                f"{int(np.sum(used == 0))}"
-    lines.append(f"  race control {model}{' (model auto)' if a.get('model_setting') == 'auto' else ''}; Jones' "
-                 f"criterion: outer race at {count['outer']}, inner race at {count['inner']}, either at "
-                 f"{count['either']} of {c.size} balls")
-    n_cut, ei, eo = int(a["truncated_contacts"]), g["edge_angle_inner_deg"][()], g["edge_angle_outer_deg"][()]
-    lines.append(f"  contact ellipses reach {ei.max():.3g} deg inner, {eo.max():.3g} deg outer; shoulders at "
-                 f"{float(a['shoulder_angle_inner_deg']):.3g} / {float(a['shoulder_angle_outer_deg']):.3g} deg"
-                 + (f": TRUNCATED at {n_cut} contact(s)" if n_cut else ""))
-    data.update(race_control_criterion=count, truncated_contacts=n_cut)
-    warnings = str(a["truncation_warning"]).split(" | ") if "truncation_warning" in a else []
-    lines += [f"  WARNING: {m}" for m in warnings + ([str(a["tilt_warning"])] if "tilt_warning" in a else [])]
-    if "tilt_warning" in a:
-        data["tilt_held_displacement"] = g["tilt_held/displacement"][()].tolist()
-    if "operating_clearance_m" in g:
-        c, dc = float(g["operating_clearance_m"][()]), float(g["clearance_change_m"][()])
-        line = f"  at temperature: operating clearance {c * 1e6:.4g} um ({dc * 1e6:+.4g} um from growth)"
-        if "preload_N" in g:
-            pre = g["preload_N"][()]
-            line += f", preload {', '.join(f'{v:.4g}' for v in pre)} N per row (no external load)"
-        lost = [s for s in ("inner", "outer") if int(a.get(f"{s}_fit_lost", 0))]
-        if lost:
-            line += "; FIT LOST: " + ", ".join(f"{s} ring" for s in lost)
-        lines.append(line)
-        data.update(operating_clearance_m=c, clearance_change_m=dc)
-    if "life_L10_Mrev" in g:
-        L = float(g["life_L10_Mrev"][()])
-        speed = float(a.get("speed_rpm", 0.0))
-        lines.append(f"  basic rating life L10 {L:.4g} million rev" + (f" = {L * 1e6 / speed / 60:.4g} h" if speed else ""))
-        data["life_L10_Mrev"] = L
-    return lines, data
-
-
-def _dtrb(f):
-    g = f["dtrb"]
-    K = g["stiffness"][()]
-    Q = g["roller_load_N"][()]
-    lines = [f"load {np.array2string(np.asarray(g.attrs['applied_load']), precision=4, separator=', ')} "
-             f"(N, N m) at {float(g.attrs['speed_rpm']):.0f} rpm, preload {float(g.attrs['preload_m']) * 1e6:.3g} um"]
-    lines += _stiffness_lines(K)
-    lines.append(f"  largest roller load {Q.max():.4g} N; loaded rollers {int(np.sum(Q > 0))} of {Q.size}")
-    return lines, {"stiffness_diagonal": np.diag(K).tolist(), "max_roller_load_N": float(Q.max())}
-
-
-def _contact(f):
-    a = f["contact"].attrs
-    p, area = float(a["max_pressure_Pa"]), float(a["area_m2"])
-    lines = [f"load {float(a['load_N']):.4g} N: maximum pressure {p * 1e-9:.4g} GPa, contact area {area * 1e6:.4g} mm2, "
-             f"approach {float(a['approach_m']) * 1e6:.4g} um"
-             + ("; EDGE STRESS (pressure singular at the roller end)" if a.get("edge_singular") else "")]
-    return lines, {"max_pressure_Pa": p, "area_m2": area, "approach_m": float(a["approach_m"])}
 
 
 SUMMARIES: dict[str, Callable] = {
