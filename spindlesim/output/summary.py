@@ -18,6 +18,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from .labels import frequency_label, readable_keys
 from .numbers import clean, g as _g, with_resolution
 from .summary_bearings import _bearing, _contact, _dtrb
 
@@ -376,7 +377,8 @@ def _transient(f):
              f"vibration amplitude over the last half x {amp[0] * 1e6:.4g} um, y {amp[1] * 1e6:.4g} um"
              + (" (NOT SETTLED: not a steady amplitude)" if settled is False else "")]
     data = {"duration_s": float(t[-1]), "amplitude_m": amp.tolist()}
-    lines += _transient_settling(a, data)
+    bearings = list(g.get("bearings", {}))
+    lines += _transient_settling(a, data, bearings)
     fr = g["spectrum/frequency_hz"][:] if "spectrum" in g else np.zeros(0)
     if len(fr) > 1:
         A = g["spectrum/amplitude_m"][:]
@@ -388,7 +390,7 @@ def _transient(f):
     elif "spectrum" in g:
         lines.append("  no spectrum: not enough steady data")
     if "poincare" in g and "periodicity" in g["poincare"].attrs:
-        lines.append("  " + _poincare_words(g["poincare"].attrs))
+        lines.append("  " + _poincare_words(g["poincare"].attrs, bearings))
         data["poincare_periodicity"] = str(g["poincare"].attrs["periodicity"])
     for key in ("roller_pass_frequency_hz", "cage_frequency_hz"):
         if key in a:
@@ -398,7 +400,7 @@ def _transient(f):
     return lines, data
 
 
-def _transient_settling(a, data: dict) -> list[str]:
+def _transient_settling(a, data: dict, bearings: list[str]) -> list[str]:
     """What the file says of the steady part: settled or not, and the spectrum's resolution."""
     if "settling_note" not in a:
         return []
@@ -414,17 +416,21 @@ def _transient_settling(a, data: dict) -> list[str]:
     data["unresolved_frequencies"] = [u for u in unresolved.split(", ") if u]
     out = [f"{head}: {note}"]
     if a.get("resolution_note", ""):
-        out.append("  " + str(a["resolution_note"]).replace("window too short", "WINDOW TOO SHORT", 1))
+        note = readable_keys(str(a["resolution_note"]), bearings)
+        out.append("  " + note.replace("window too short", "WINDOW TOO SHORT", 1))
     return out
 
 
-def _poincare_words(p) -> str:
+def _poincare_words(p, bearings: list[str]) -> str:
     """The primary Poincare set's periodicity, with its tolerance, from its group's attributes."""
     label, n = str(p["periodicity"]), int(p.get("classified_points", 0))
     rel = float(p.get("relative_tolerance", np.nan))
     tol = f"tolerance {float(p['tolerance_m']):.3g} m" + (f" = {100 * rel:.2g} % of the orbit" if np.isfinite(rel)
                                                            else "")
-    s = f"Poincare {p.get('sampling', '')}: {label}"
+    sampling = str(p.get("sampling", ""))
+    if sampling.startswith("once per "):
+        sampling = "once per " + frequency_label(sampling[len("once per "):], bearings)
+    s = f"Poincare {sampling}: {label}"
     if label.startswith("period-"):
         k = int(p["period"])
         ext = float(p.get("orbit_extent_m", 0.0))
