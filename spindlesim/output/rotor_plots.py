@@ -70,8 +70,8 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
         ax.set_ylabel("amplitude [-]")
         ax.set_yticks([-1.0, 0.0, 1.0])  # normalised: the largest translation is 1 (three ticks keep 8 panels cheap)
         what = r.whirl[k]
-        ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.4f}, "
-                     f"log dec {r.log_dec[k]:.3f}, {what}", fontsize=9, y=1.0)
+        ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.3g}, "
+                     f"log dec {r.log_dec[k]:.3g}, {what}", fontsize=9, y=1.0)  # 3 significant digits
         ax.grid(True, alpha=0.3)
     if bearings:
         for name, zb in bearings:

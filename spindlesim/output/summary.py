@@ -88,7 +88,7 @@ def _modal(f):
     wh = g["whirl"][:].astype(str)
     lines = [f"modes at {_f(g.attrs['speed_rpm']):g} rpm:", "   #  frequency Hz  damping ratio   log dec  whirl"]
     for k, (a, b, c, w) in enumerate(zip(fr, z, ld, wh)):
-        lines.append(f"  {k + 1:2d}  {a:12.2f}  {b:13.4f}  {c:8.4f}  {w}" + ("   UNSTABLE" if b < 0 else ""))
+        lines.append(f"  {k + 1:2d}  {a:12.2f}  {b:13.3g}  {c:8.3g}  {w}" + ("   UNSTABLE" if b < 0 else ""))
     data = {"speed_rpm": _f(g.attrs["speed_rpm"]), "frequency_hz": fr.tolist(), "damping_ratio": z.tolist(),
             "log_dec": ld.tolist(), "whirl": wh.tolist()}
     return lines, data

@@ -91,3 +91,9 @@ def test_static_summary_prints_no_round_off(tmp_path):
 def test_frf_summary_says_which_dof_responds_and_which_is_forced(tmp_path):
     out = _run(tmp_path, "frf", "decks/seed001_dtrb_rotor.yaml")
     assert "response at node 5 x / force at node 9 x, 3000 rpm" in out
+
+
+def test_modal_damping_has_significant_digits(tmp_path):
+    out = _run(tmp_path, "modal", "decks/milling_spindle.yaml", "--modes", "2")  # an axial mode, zeta 1.5e-05
+    rows = [ln.split() for ln in out.splitlines() if ln.strip()[:2].strip().isdigit() and "Hz" not in ln]
+    assert [r[2] for r in rows] == ["1.49e-05", "0.00889"]  # old: 0.0000, 0.0089
