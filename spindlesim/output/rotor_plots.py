@@ -100,6 +100,11 @@ def frf_magnitude_phase_figure(r: FrfResult):
     fig = new_figure(8, 6, layout=None)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     a1.semilogy(f, np.abs(h) * 1e6)
+    if r.static_compliance_m_N is not None and r.static_compliance_m_N != 0:  # K^-1 at 0 Hz, below the grid
+        a1.plot([0.0], [abs(r.static_compliance_m_N) * 1e6], "o", color="k", ms=5, gid="static",
+                label=f"static compliance K^-1 (0 Hz) {abs(r.static_compliance_m_N) * 1e6:.4g} um/N")
+        a1.legend(fontsize=8, loc="upper right")
+        a1.set_xlim(left=0.0)
     a1.set_ylabel("|receptance| [um/N]")
     a1.set_title("Receptance: " + _frf_label(r))
     a1.grid(True, which="both", alpha=0.3)

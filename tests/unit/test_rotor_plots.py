@@ -3,6 +3,7 @@
 import dataclasses
 
 import numpy as np
+import pytest
 
 from spindlesim.analysis.results import CampbellResult
 from spindlesim.output.campbell_plots import campbell_figure
@@ -134,3 +135,20 @@ def test_campbell_log_dec_panel_neither_clipped_nor_collapsed():
     unstable = dataclasses.replace(r, log_dec=r.log_dec - 0.02)
     b, t = campbell_figure(unstable).axes[1].get_ylim()
     assert b <= 2 * np.min(unstable.log_dec) and t >= 2 * np.max(unstable.log_dec)
+
+
+def test_frf_magnitude_starts_at_the_static_compliance():
+    from spindlesim.analysis.frf import solve_frf
+    from spindlesim.analysis.points import OperatingPoints
+    from spindlesim.deck import default_deck
+    from spindlesim.model.build import build_rotor
+    from spindlesim.output.rotor_plots import frf_magnitude_phase_figure
+
+    points = OperatingPoints(build_rotor(default_deck("spindle_linear").deck))
+    r = solve_frf(points, np.linspace(50, 5000, 200), 1, "x", 1, "x", speed_rpm=2170.0)
+    assert r.static_compliance_m_N is not None
+    ax = frf_magnitude_phase_figure(r).axes[0]
+    dot = [ln for ln in ax.get_lines() if ln.get_gid() == "static"]
+    assert len(dot) == 1 and list(dot[0].get_xdata()) == [0.0]  # the grid starts at 50 Hz, the axis at 0
+    assert dot[0].get_ydata()[0] == pytest.approx(abs(r.static_compliance_m_N) * 1e6)
+    assert ax.get_xlim()[0] == 0.0
