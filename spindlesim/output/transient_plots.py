@@ -435,6 +435,9 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
     fig = new_figure(10, 6.5, layout=None)
     ax = fig.subplots(2, 1)
     what = _pretty(name, units)
+    if units == "m":  # a length in the unit that suits it (a race deflects by micrometres)
+        scale, units = length_unit(float(np.max(np.abs(values), initial=0.0)) or 1e-12)
+        values = values / scale
     who = bearing_label(res.bearing_names[b], res.bearing_names)
     title = _title(res, f"{who[0].upper()}{who[1:]}: {what}", operating, 10)
     _fixed(fig, title, hgap_in=0.85)
@@ -442,7 +445,8 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
     if not t.size:
         _no_data(ax[0], "no samples")
         return fig
-    element = "roller" if "roller" in name else "ball" if "ball" in name else "element"
+    element = "roller" if "roller" in name else "ball" if "ball" in name else "race node" if "race" in name \
+        else "element"
     V = values.reshape(len(t), -1)
     cage = min((v for k, v in res.frequencies_hz.items() if k.endswith(".cage") and v > 0), default=0.0)
     span = 6 / cage if cage > 0 else t[-1] - t[0]

@@ -137,3 +137,14 @@ def test_frequency_labels_name_the_bearing_only_among_several():
     assert frequency_label("revolution", ["front", "rear"]) == "revolution"
     assert bearing_label("rear", ["front", "rear"]) == "bearing 'rear'" and bearing_label("bearing", ["bearing"]) == "bearing"
     assert readable_keys("too short: bearing.cage (33.2 Hz)", ["bearing"]) == "too short: cage (33.2 Hz)"
+
+
+def test_race_deflection_is_drawn_in_micrometres(rig_run):
+    import dataclasses
+
+    t = rig_run.time_s
+    race = 2e-6 * np.sin(np.outer(t * 2 * np.pi * 33.0, np.ones(12)) + np.arange(12))  # +-2 um on 12 race nodes
+    outputs = ({**rig_run.bearing_outputs[0], "race_deflection_m": (race, "m")},)
+    fig = tp.bearing_output_figure(dataclasses.replace(rig_run, bearing_outputs=outputs), 0, "race_deflection_m")
+    assert fig.axes[1].get_ylabel() == "race deflection [um]" and fig.axes[0].get_ylabel() == "race node"
+    assert np.max(np.abs(fig.axes[1].get_lines()[0].get_ydata())) == pytest.approx(2.0, rel=0.05)  # old: 2e-06 m
