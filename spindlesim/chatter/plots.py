@@ -30,7 +30,7 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
                         simulations: Sequence[SimulationResult] = (), depth_max_mm: float | None = None,
                         recommendation: Pocket | None = None) -> Figure:
     """Limit depth [mm] against speed [rpm]; stable region shaded, lobe numbers at each lobe's minimum;
-    below it the chatter frequency at the limit (and each lobe's, thin), as CutPro and MetalMax show.
+    below it the chatter frequency at the limit (points; each lobe's as thin lines), as CutPro and MetalMax show.
 
     Flip (period-doubling) parts of a semi-discretization boundary are drawn in red; speeds stable up
     to the depth cap are marked at the cap; the recommended pocket is drawn as its speed interval at
@@ -86,8 +86,7 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
                     color="k" if stable else "C3", mfc="none", ms=7, ls="none",
                     label=f"simulation: {'stable' if stable else 'chatter'}")
     fc = np.where(np.isfinite(lim), diagram.chatter_frequency_hz, np.nan)
-    ax_f.plot(n, fc, color="C0", lw=1.2)
-    _isolated_points(ax_f, n, fc)
+    ax_f.plot(n, fc, ".", color="C0", ms=4, gid="at-limit")  # points: the limit jumps between modes
     if np.isfinite(fc).any():  # the frequencies at the limit; other lobes' frequencies only where they fall in it
         lo, hi = float(np.nanmin(fc)), float(np.nanmax(fc))
         pad = 0.15 * max(hi - lo, 0.05 * hi)

@@ -64,7 +64,7 @@ def test_lobe_diagram_has_a_chatter_frequency_panel_and_legends_for_lobes_and_si
     ax, ax_f = fig.axes[:2]
     assert ax_f.get_ylabel().replace("\n", " ") == "chatter frequency [Hz]"
     assert ax_f.get_xlabel() == "spindle speed [rpm]" and ax.get_shared_x_axes().joined(ax, ax_f)
-    at_limit = ax_f.get_lines()[-1] if ax_f.get_lines()[-1].get_gid() != "isolated" else ax_f.get_lines()[-2]
+    at_limit = next(ln for ln in ax_f.get_lines() if ln.get_gid() == "at-limit")
     np.testing.assert_array_equal(at_limit.get_ydata(), zo.chatter_frequency_hz)
     assert len([ln for ln in ax_f.get_lines() if ln.get_color() == "0.6"]) == len(zo.lobes)  # each lobe's too
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
