@@ -11,6 +11,7 @@ import numpy as np
 
 from ..analysis.results import FrfResult, ModalResult, StaticResult, UnbalanceResult
 from .figures import fixed_layout, new_figure
+from .numbers import g
 
 
 def static_figure(r: StaticResult):
@@ -34,7 +35,8 @@ def static_figure(r: StaticResult):
                      fontsize=8)
     ax1.set_ylabel("deflection [um]")
     F = r.applied_force_N
-    ax1.set_title(f"Static deflection under Fx {F[0]:.4g} N, Fy {F[1]:.4g} N (applied, gravity included); "
+    fz = f", Fz {g(r.applied_axial_force_N)} N" if r.axial_displacement_m is not None else ""
+    ax1.set_title(f"Static deflection under Fx {g(F[0])} N, Fy {g(F[1])} N{fz} (applied, gravity included); "
                   f"stiffness at node {r.stiffness_node + 1} {r.stiffness_dof}: "
                   f"{r.static_stiffness_N_m / 1e6:.3g} N/um", fontsize=9)
     ax1.legend()

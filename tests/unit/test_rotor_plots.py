@@ -152,3 +152,18 @@ def test_frf_magnitude_starts_at_the_static_compliance():
     assert len(dot) == 1 and list(dot[0].get_xdata()) == [0.0]  # the grid starts at 50 Hz, the axis at 0
     assert dot[0].get_ydata()[0] == pytest.approx(abs(r.static_compliance_m_N) * 1e6)
     assert ax.get_xlim()[0] == 0.0
+
+
+def test_static_title_states_the_axial_load():
+    from spindlesim.analysis.points import OperatingPoints
+    from spindlesim.analysis.static import solve_static
+    from spindlesim.deck import load_deck
+    from spindlesim.model.build import build_rotor
+    from spindlesim.output.rotor_plots import static_figure
+
+    from pathlib import Path
+
+    deck = load_deck(Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml").deck
+    r = solve_static(OperatingPoints(build_rotor(deck)))
+    title = static_figure(r).axes[0].get_title()
+    assert title.startswith("Static deflection under Fx 0 N, Fy -2000 N, Fz 2000 N (applied"), title  # old: no Fz

@@ -1,12 +1,15 @@
 """Result summaries on the terminal (issue 16, item 8): text by default, --quiet, --json."""
 
 import json
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
 
 from spindlesim.cli import main
 from spindlesim.analysis.resonance import required_separation_margin
+
+DECKS = Path(__file__).parents[2] / "decks"
 
 
 @pytest.mark.parametrize("af,below,expect", [
@@ -79,7 +82,7 @@ def test_a_spectral_line_is_printed_to_its_resolution(value, half, expect):
 
 
 def test_static_summary_prints_no_round_off(tmp_path):
-    out = _run(tmp_path, "static", "decks/seed001_dtrb_rotor.yaml")  # old: x 4.442e-14 um, reaction 3.229e-12, -0
+    out = _run(tmp_path, "static", str(DECKS / "seed001_dtrb_rotor.yaml"))  # old: x 4.442e-14 um, reaction 3.229e-12, -0
     rows = [ln for ln in out.splitlines() if ("reaction" in ln or "deflection" in ln) and not ln.endswith(".png")]
     assert len(rows) == 5
     for ln in rows:
@@ -89,11 +92,11 @@ def test_static_summary_prints_no_round_off(tmp_path):
 
 
 def test_frf_summary_says_which_dof_responds_and_which_is_forced(tmp_path):
-    out = _run(tmp_path, "frf", "decks/seed001_dtrb_rotor.yaml")
+    out = _run(tmp_path, "frf", str(DECKS / "seed001_dtrb_rotor.yaml"))
     assert "response at node 5 x / force at node 9 x, 3000 rpm" in out
 
 
 def test_modal_damping_has_significant_digits(tmp_path):
-    out = _run(tmp_path, "modal", "decks/milling_spindle.yaml", "--modes", "2")  # an axial mode, zeta 1.5e-05
+    out = _run(tmp_path, "modal", str(DECKS / "milling_spindle.yaml"), "--modes", "2")  # an axial mode, zeta 1.5e-05
     rows = [ln.split() for ln in out.splitlines() if ln.strip()[:2].strip().isdigit() and "Hz" not in ln]
     assert [r[2] for r in rows] == ["1.49e-05", "0.00889"]  # old: 0.0000, 0.0089
