@@ -29,14 +29,16 @@ _KIND_STYLE = {"hopf": ("C0", "-"), "flip": ("C3", "-"), "fold": ("C2", "-"), ""
 def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lobes: bool = True,
                         simulations: Sequence[SimulationResult] = (), depth_max_mm: float | None = None,
                         recommendation: Pocket | None = None) -> Figure:
-    """Limit depth [mm] against speed [rpm]; stable region shaded, lobe numbers at each lobe's minimum.
+    """Limit depth [mm] against speed [rpm]; stable region shaded, lobe numbers at each lobe's minimum;
+    below it the chatter frequency at the limit (points; each lobe's as thin lines), as CutPro and MetalMax show.
 
     Flip (period-doubling) parts of a semi-discretization boundary are drawn in red; speeds stable up
     to the depth cap are marked at the cap; the recommended pocket is drawn as its speed interval at
-    its depth with the recommended speed.  Simulated points: o stable, x chatter.
+    its depth with the recommended speed.  Simulated points: o stable, x chatter (in the legend).  A
+    limit found at one speed between speeds without one is drawn as a point.
     """
-    fig = _figure(9.0, 5.0)
-    ax = fig.add_subplot()
+    fig = _figure(9.0, 7.0)
+    ax, ax_f = fig.subplots(2, 1, sharex=True, height_ratios=[3, 1.3])
     n = diagram.speed_rpm
     lim = 1e3 * diagram.limit_depth_m
     capped = np.asarray(diagram.capped, bool) & ~np.isfinite(lim)
@@ -45,11 +47,12 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
     top = depth_max_mm or 1.12 * max(tops)
     ax.fill_between(n, 0.0, np.where(np.isfinite(lim), lim, top), color="C2", alpha=0.18, lw=0,
                     label="stable")
-    if show_lobes:
-        for c in diagram.lobes:
-            if diagram.method != "semi_discretization":
-                ax.plot(c.speed_rpm, 1e3 * c.limit_depth_m, color="0.6", lw=0.7)
+    if show_lobes and diagram.method != "semi_discretization":
+        for k, c in enumerate(diagram.lobes):
+            ax.plot(c.speed_rpm, 1e3 * c.limit_depth_m, color="0.6", lw=0.7, label=None if k else "each lobe")
+            ax_f.plot(c.speed_rpm, c.chatter_frequency_hz, color="0.6", lw=0.7)
     ax.plot(n, lim, color="C0", lw=1.8, label="limit depth")
+    _isolated_points(ax, n, lim)
     kinds = diagram.boundary_kind if len(diagram.boundary_kind) == len(n) else np.full(len(n), "hopf")
     for kd in ("flip", "fold"):
         if np.any(kinds == kd):
@@ -76,12 +79,23 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
             placed.append(c.speed_rpm[i])
             ax.annotate(str(c.lobe), (c.speed_rpm[i], d[i]), textcoords="offset points", xytext=(0, -11),
                         ha="center", fontsize="x-small", color="C3" if c.kind == "flip" else "k")
-    for s in simulations:
-        ax.plot([s.speed_rpm], [1e3 * s.depth_m], "o" if s.stable else "x", color="k" if s.stable else "C3",
-                mfc="none", ms=7)
+    for stable in (True, False):
+        sims = [s for s in simulations if bool(s.stable) == stable]
+        if sims:
+            ax.plot([s.speed_rpm for s in sims], [1e3 * s.depth_m for s in sims], "o" if stable else "x",
+                    color="k" if stable else "C3", mfc="none", ms=7, ls="none",
+                    label=f"simulation: {'stable' if stable else 'chatter'}")
+    fc = np.where(np.isfinite(lim), diagram.chatter_frequency_hz, np.nan)
+    ax_f.plot(n, fc, ".", color="C0", ms=4, gid="at-limit")  # points: the limit jumps between modes
+    if np.isfinite(fc).any():  # the frequencies at the limit; other lobes' frequencies only where they fall in it
+        lo, hi = float(np.nanmin(fc)), float(np.nanmax(fc))
+        pad = 0.15 * max(hi - lo, 0.05 * hi)
+        ax_f.set_ylim(lo - pad, hi + pad)
+    ax_f.set_ylabel("chatter\nfrequency [Hz]")
+    ax_f.grid(True, alpha=0.3)
+    ax_f.set_xlabel("spindle speed [rpm]")
     ax.set_xlim(n[0], n[-1])
     ax.set_ylim(0.0, top)
-    ax.set_xlabel("spindle speed [rpm]")
     ax.set_ylabel("limit depth of cut [mm]")
     used = list(dict.fromkeys(str(m) for m in diagram.method_per_speed)) or [diagram.method]
     ax.set_title(title or f"{diagram.process}\n{METHOD_TITLES.get(used[0], used[0]) if len(used) == 1 else 'mixed: ' + ', '.join(u.replace('_', ' ') for u in used)}"
@@ -91,26 +105,43 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
     return fig
 
 
+def _isolated_points(ax, x: np.ndarray, y: np.ndarray) -> None:
+    """Finite values without a finite neighbour (a line through them draws nothing) as points."""
+    ok = np.isfinite(y)
+    alone = ok & ~np.r_[False, ok[:-1]] & ~np.r_[ok[1:], False]
+    if alone.any():
+        ax.plot(x[alone], y[alone], ".", color="C0", ms=5, gid="isolated")
+
+
 def frf_figure(tool: ToolPointFrf | ToolPointModel, terms: Sequence[str] = ("xx", "yy"),
                title: str | None = None) -> Figure:
-    """Real and imaginary parts (left) and magnitude and phase (right) of the chosen terms [m/N -> um/N]."""
+    """Real and imaginary parts (left) and magnitude and phase (right) of the chosen terms [m/N -> um/N];
+    xx solid, yy dashed, cross terms dotted (equal xx and yy stay readable); the frequency axis ends 30 %
+    above the highest peak of a direct term that reaches a tenth of the largest one (the modes that can
+    chatter), not at the end of the FRF's grid."""
     frf = tool.frf() if isinstance(tool, ToolPointModel) else tool
     fig = _figure(10.0, 6.0)
     (a_re, a_mag), (a_im, a_ph) = fig.subplots(2, 2, sharex=True)
-    f = frf.frequency_hz
+    end = modes_of_interest_hz(frf)
+    shown = frf.frequency_hz <= end  # drawn up to the axis' end only, so the magnitude axis fits what is seen
+    f = frf.frequency_hz[shown]
+    styles = {"xx": ("C0", "-", 1.6), "yy": ("C1", "--", 1.2)}
     for t in terms:
         i, j = DIRECTIONS.index(t[0]), DIRECTIONS.index(t[1])
-        h = 1e6 * frf.H[:, i, j]
+        h = 1e6 * frf.H[shown, i, j]
         if not np.any(h):
             continue
-        a_re.plot(f, h.real, label=t)
-        a_im.plot(f, h.imag, label=t)
-        a_mag.semilogy(f, np.abs(h), label=t)
-        a_ph.plot(f, np.rad2deg(np.angle(h)), label=t)
+        color, ls, lw = styles.get(t, ("C2", ":", 1.2))
+        style = dict(color=color, ls=ls, lw=lw, label=t)
+        a_re.plot(f, h.real, **style)
+        a_im.plot(f, h.imag, **style)
+        a_mag.semilogy(f, np.abs(h), **style)
+        a_ph.plot(f, np.rad2deg(np.angle(h)), **style)
+    a_re.set_xlim(f[0], end)
     a_re.set_ylabel("real [um/N]")
     a_im.set_ylabel("imaginary [um/N]")
     a_mag.set_ylabel("magnitude [um/N]")
-    a_ph.set_ylabel("phase [deg]")
+    a_ph.set_ylabel("phase [deg] (wrapped)")
     a_ph.set_ylim(-180, 180)
     a_ph.set_yticks([-180, -90, 0, 90, 180])
     for a in (a_im, a_ph):
@@ -120,6 +151,18 @@ def frf_figure(tool: ToolPointFrf | ToolPointModel, terms: Sequence[str] = ("xx"
     a_re.legend(fontsize="small")
     fig.suptitle(title or f"tool-point FRF ({frf.source or 'unnamed'})", fontsize="medium")
     return fig
+
+
+def modes_of_interest_hz(frf: ToolPointFrf) -> float:
+    """The end of an FRF figure's frequency axis: 1.3 x the highest local peak of |H_xx| or |H_yy| that
+    reaches a tenth of the largest, at most the grid's end."""
+    f = frf.frequency_hz
+    mag = np.abs(np.stack([frf.H[:, k, k] for k in range(frf.H.shape[1])], axis=1)).max(axis=1)
+    if len(f) < 3 or not np.any(mag > 0):
+        return float(f[-1])
+    peak = np.r_[False, (mag[1:-1] >= mag[:-2]) & (mag[1:-1] > mag[2:]), False]
+    big = peak & (mag >= 0.1 * mag.max())
+    return float(min(f[-1], 1.3 * f[big].max())) if big.any() else float(f[-1])
 
 
 def stability_map_figure(diagram: LobeDiagram, title: str | None = None, rho_range: tuple[float, float] = (0.6, 1.4)

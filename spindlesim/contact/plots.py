@@ -38,7 +38,8 @@ def pressure_map_figure(result: ContactResult, title: str = "Contact pressure") 
             + (" (edge singularity)" if result.edge_singular else ""))
     ax.set_xlabel("y along roller [mm]")
     ax.set_ylabel("x across contact [mm]")
-    ax.set_title(f"{title}: load {result.load_N:.4g} N")
+    load = f"{result.load_N:,.0f}" if abs(result.load_N) >= 1000 else f"{result.load_N:.4g}"  # 10,000 N, not 1e+04
+    ax.set_title(f"{title}: load {load} N")
     ax.legend(loc="upper right", fontsize="small")
     return fig
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .numbers import clean, g as _g
 from .summary import scalar
 
 
@@ -179,8 +180,11 @@ def dtrb(f):
     g = f["dtrb"]
     K = g["stiffness"][()]
     Q = g["roller_load_N"][()]
-    lines = [f"load {np.array2string(np.asarray(g.attrs['applied_load']), precision=4, separator=', ')} "
-             f"(N, N m) at {float(g.attrs['speed_rpm']):.0f} rpm, preload {float(g.attrs['preload_m']) * 1e6:.3g} um"]
+    load = clean(g.attrs["applied_load"])
+    words = [f"{n} {_g(v)} {'N' if k < 3 else 'N m'}"
+             for k, (n, v) in enumerate(zip(("Fx", "Fy", "Fz", "Mx", "My"), load)) if v != 0.0]
+    lines = [f"load {', '.join(words) or 'none'} at {float(g.attrs['speed_rpm']):.0f} rpm, "
+             f"preload {float(g.attrs['preload_m']) * 1e6:.3g} um"]
     lines += _stiffness_lines(K)
     lines.append(f"  largest roller load {Q.max():.4g} N; loaded rollers {int(np.sum(Q > 0))} of {Q.size}")
     return lines, {"stiffness_diagonal": np.diag(K).tolist(), "max_roller_load_N": float(Q.max())}

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..analysis.results import CampbellResult, FrfResult, ModalResult, StaticResult, UnbalanceResult
+from ..analysis.results import FrfResult, ModalResult, StaticResult, UnbalanceResult
 from .figures import fixed_layout, new_figure
+from .numbers import g
 
 
 def static_figure(r: StaticResult):
@@ -34,7 +35,8 @@ def static_figure(r: StaticResult):
                      fontsize=8)
     ax1.set_ylabel("deflection [um]")
     F = r.applied_force_N
-    ax1.set_title(f"Static deflection under Fx {F[0]:.4g} N, Fy {F[1]:.4g} N (applied, gravity included); "
+    fz = f", Fz {g(r.applied_axial_force_N)} N" if r.axial_displacement_m is not None else ""
+    ax1.set_title(f"Static deflection under Fx {g(F[0])} N, Fy {g(F[1])} N{fz} (applied, gravity included); "
                   f"stiffness at node {r.stiffness_node + 1} {r.stiffness_dof}: "
                   f"{r.static_stiffness_N_m / 1e6:.3g} N/um", fontsize=9)
     ax1.legend()
@@ -70,8 +72,8 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
         ax.set_ylabel("amplitude [-]")
         ax.set_yticks([-1.0, 0.0, 1.0])  # normalised: the largest translation is 1 (three ticks keep 8 panels cheap)
         what = r.whirl[k]
-        ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.4f}, "
-                     f"log dec {r.log_dec[k]:.3f}, {what}", fontsize=9, y=1.0)
+        ax.set_title(f"mode {k + 1}: {r.frequency_hz[k]:.1f} Hz, damping ratio {r.damping_ratio[k]:.3g}, "
+                     f"log dec {r.log_dec[k]:.3g}, {what}", fontsize=9, y=1.0)  # 3 significant digits
         ax.grid(True, alpha=0.3)
     if bearings:
         for name, zb in bearings:
@@ -87,146 +89,9 @@ def modes_figure(r: ModalResult, max_modes: int = 8, bearings: tuple[tuple[str, 
     return fig
 
 
-def campbell_figure(r: CampbellResult, operating_rpm: float | None = None):
-    """Tracked modes (one colour per mode in both panels; marker = whirl), the 0.5x line and the
-    excitation orders of the crossings (1x, 2x, a cutter's tooth passing), every crossing marked
-    (a star where it is an API 684 critical speed, AF >= 2.5, labelled on the 1x line), speeds with an
-    unstable mode shaded."""
-    fig = new_figure(10, 7.5, layout=None)
-    ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
-    s = r.speed_rpm
-    marker = {"forward": "^", "backward": "v", "mixed": "o", "axial": "s"}
-    top = 1.08 * np.nanmax(r.frequency_hz)
-    for k in range(r.frequency_hz.shape[1]):
-        c = f"C{k % 10}"
-        ax1.plot(s, r.frequency_hz[:, k], color=c, lw=1.0)
-        for w, m in marker.items():
-            sel = r.whirl[:, k] == w
-            if sel.any():
-                ax1.plot(s[sel], r.frequency_hz[sel, k], m, ms=3.5, color=c, mfc="none" if w == "backward" else c,
-                         ls="none")
-        ax2.plot(s, r.log_dec[:, k], color=c, lw=1.2, label=f"mode {k + 1}")
-    orders = sorted({0.5, 1.0, 2.0} | set(r.crossings.orders if r.crossings is not None else ()))
-    styles = {0.5: ":", 1.0: "--", 2.0: "-."}
-    for mult in orders:
-        ax1.plot(s, mult * s / 60.0, color="k", ls=styles.get(mult, (0, (5, 2, 1, 2, 1, 2))), lw=0.9,
-                 label=f"{mult:g}x")
-    for w, m in marker.items():
-        if np.any(r.whirl == w):
-            ax1.plot([], [], m, color="0.3", mfc="none" if w == "backward" else "0.3", ls="none", label=w)
-    c = r.crossings
-    if c is not None and len(c):
-        crit = c.critical
-        if crit.any():
-            ax1.plot(c.speed_rpm[crit], c.frequency_hz[crit], "*", ms=12, color="tab:green", mec="k", zorder=5,
-                     ls="none", label="AF >= 2.5")
-        if not crit.all():
-            ax1.plot(c.speed_rpm[~crit], c.frequency_hz[~crit], "o", ms=7, mfc="none", mec="k", zorder=5,
-                     ls="none", label="AF < 2.5")
-    elif c is None:  # a result without the crossings: its 1x critical speeds
-        ax1.plot(r.critical_speeds_rpm, r.critical_speeds_rpm / 60.0, "*", ms=12, color="tab:green", mec="k",
-                 zorder=5, ls="none")
-    for cs in r.critical_speeds_rpm:
-        ax1.annotate(f"{cs:.0f} rpm", (cs, cs / 60.0), xytext=(6, -12), textcoords="offset points", fontsize=8)
-    unstable = np.any(r.log_dec < 0, axis=1)
-    for a in (ax1, ax2):
-        for i0, i1 in _runs(unstable):
-            a.axvspan(s[i0], s[i1], color="tab:red", alpha=0.12, lw=0,
-                      label="unstable" if (a is ax1 and i0 == _runs(unstable)[0][0]) else None)
-    if operating_rpm:
-        for a in (ax1, ax2):
-            a.axvline(operating_rpm, color="0.3", lw=1.0, ls=(0, (1, 3)))
-        ax1.annotate("operating speed", (operating_rpm, 0.98), xycoords=("data", "axes fraction"), rotation=90,
-                     va="top", ha="right", fontsize=7, color="0.3")
-    ax1.set_ylabel("damped natural frequency [Hz]")
-    ax1.set_ylim(0, top)
-    ax1.set_xlim(s[0], s[-1])
-    w = fig.get_size_inches()[0]
-    fixed_layout(fig, right_in=1.2, gap_in=0.3)
-    fig.legend(*ax1.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1 - 1.15 / w, ax1.get_position().y1),
-               fontsize=7, frameon=False)
-    crit = ", ".join(f"{c:.0f}" for c in r.critical_speeds_rpm)
-    ax1.set_title("Campbell diagram" + (f": critical speeds {crit} rpm (1x, AF >= 2.5)"
-                                        if len(r.critical_speeds_rpm) else ": no critical speed in the range"),
-                  fontsize=11)
-    ax1.grid(True, alpha=0.3)
-    ax2.axhline(0, color="k", lw=0.8)
-    ax2.set_ylabel("log decrement [-]")
-    ax2.set_xlabel("speed [rpm]")
-    ax2.set_yscale("symlog", linthresh=0.01)
-    fig.legend(*ax2.get_legend_handles_labels(), loc="lower left", bbox_to_anchor=(1 - 1.15 / w, ax2.get_position().y0),
-               fontsize=7, frameon=False)
-    ax2.grid(True, alpha=0.3)
-    return fig
-
-
-def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
-    """(first, last) index of every run of True in ``mask``."""
-    out, start = [], None
-    for i, v in enumerate(mask):
-        if v and start is None:
-            start = i
-        if not v and start is not None:
-            out.append((start, i - 1))
-            start = None
-    if start is not None:
-        out.append((start, len(mask) - 1))
-    return out
-
-
-def campbell_frozen_figure(r: CampbellResult, frozen: CampbellResult, frozen_rpm: float):
-    """The speed-dependent diagram (solid) over the one with bearing coefficients frozen at one speed (dashed)."""
-    fig = new_figure(9, 6)
-    ax = fig.subplots()
-    s = r.speed_rpm
-    for k in range(r.frequency_hz.shape[1]):
-        ax.plot(s, r.frequency_hz[:, k], color="tab:blue", lw=1.2, label="bearings at every speed" if k == 0 else None)
-        ax.plot(s, frozen.frequency_hz[:, k], color="tab:orange", lw=1.0, ls="--",
-                label=f"bearings frozen at {frozen_rpm:g} rpm" if k == 0 else None)
-    ax.plot(s, s / 60.0, "k:", lw=1, label="1x")
-    top = np.nanmax(np.concatenate([r.frequency_hz.ravel(), frozen.frequency_hz.ravel()]))
-    ax.set_ylim(0, top * 1.05)
-    ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("damped natural frequency [Hz]")
-    ax.set_title("Campbell diagram: effect of the bearings' speed dependence")
-    ax.legend(fontsize=8)
-    ax.grid(True, alpha=0.3)
-    return fig
-
-
-def campbell_thermal_figure(r: CampbellResult, cold: CampbellResult, stiffness: dict):
-    """Natural frequencies (top) and the bearings' radial stiffness (bottom) against speed, at the spindle's
-    thermal equilibrium of every speed (solid) and with the bearings as assembled (dashed)."""
-    fig = new_figure(9, 8, layout=None)
-    ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
-    s = r.speed_rpm
-    for k in range(r.frequency_hz.shape[1]):
-        ax1.plot(s, r.frequency_hz[:, k], color="tab:red", lw=1.2, label="at thermal equilibrium" if k == 0 else None)
-        ax1.plot(s, cold.frequency_hz[:, k], color="tab:blue", lw=1.0, ls="--", label="bearings cold" if k == 0 else None)
-    ax1.plot(s, s / 60.0, "k:", lw=1, label="1x")
-    top = np.nanmax(np.concatenate([r.frequency_hz.ravel(), cold.frequency_hz.ravel()]))
-    ax1.set_ylim(0, top * 1.05)
-    ax1.set_ylabel("damped natural frequency [Hz]")
-    ax1.legend(fontsize=8, loc="upper left")
-    for j, name in enumerate(stiffness["bearing"]):
-        if not np.any(stiffness["thermal"][:, j]) and not np.any(stiffness["cold"][:, j]):
-            continue  # a damper without stiffness
-        color = f"C{j}"
-        ax2.plot(stiffness["speed_rpm"], stiffness["thermal"][:, j] / 1e6, "-", color=color, label=f"{name}")
-        ax2.plot(stiffness["speed_rpm"], stiffness["cold"][:, j] / 1e6, "--", color=color)
-    ax2.set_ylabel("radial stiffness K_xx [N/um]\n(solid: thermal, dashed: cold)")
-    ax2.set_xlabel("speed [rpm]")
-    ax2.legend(fontsize=7, ncols=4, loc="upper left")
-    for ax in (ax1, ax2):
-        ax.grid(True, alpha=0.3)
-    fixed_layout(fig, left_in=1.0, top_in=0.5, gap_in=0.25)
-    fig.suptitle("Campbell diagram and bearing stiffness with and without the spindle's temperatures", x=0.02,
-                 ha="left", fontsize=10)
-    return fig
-
-
 def _frf_label(r: FrfResult) -> str:
-    return f"node {r.output_node} {r.output_dof} / node {r.input_node} {r.input_dof} at {r.speed_rpm:g} rpm"
+    return (f"response at node {r.output_node} {r.output_dof} / force at node {r.input_node} {r.input_dof}, "
+            f"{r.speed_rpm:g} rpm")
 
 
 def frf_magnitude_phase_figure(r: FrfResult):
@@ -237,8 +102,13 @@ def frf_magnitude_phase_figure(r: FrfResult):
     fig = new_figure(8, 6, layout=None)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     a1.semilogy(f, np.abs(h) * 1e6)
+    if r.static_compliance_m_N is not None and r.static_compliance_m_N != 0:  # K^-1 at 0 Hz, below the grid
+        a1.plot([0.0], [abs(r.static_compliance_m_N) * 1e6], "o", color="k", ms=5, gid="static",
+                label=f"static compliance K^-1 (0 Hz) {abs(r.static_compliance_m_N) * 1e6:.4g} um/N")
+        a1.legend(fontsize=8, loc="upper right")
+        a1.set_xlim(left=0.0)
     a1.set_ylabel("|receptance| [um/N]")
-    a1.set_title("Receptance " + _frf_label(r))
+    a1.set_title("Receptance: " + _frf_label(r))
     a1.grid(True, which="both", alpha=0.3)
     a2.plot(f, np.degrees(np.unwrap(np.angle(h))))  # unwrapped: no false vertical jumps at +-180
     a2.set_ylabel("phase (unwrapped) [deg]")
@@ -255,7 +125,7 @@ def frf_real_imag_figure(r: FrfResult):
     b1, b2 = fig.subplots(2, 1, sharex=True)
     b1.plot(f, h.real * 1e6)
     b1.set_ylabel("real part [um/N]")
-    b1.set_title("Receptance " + _frf_label(r))
+    b1.set_title("Receptance: " + _frf_label(r))
     b1.grid(True, alpha=0.3)
     b2.plot(f, h.imag * 1e6)
     b2.set_ylabel("imaginary part [um/N]")

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from .numbers import clean, g as _g
 from .summary import scalar
 
 
@@ -19,32 +20,34 @@ def static(f):
     a = g.attrs
     lines, data = [], {"speed_rpm": scalar(a["speed_rpm"])}
     F = g["applied_force_N"][:]
-    load = f"Fx {F[0]:.4g} N, Fy {F[1]:.4g} N"
+    load = f"Fx {_g(F[0])} N, Fy {_g(F[1])} N"
     if "applied_axial_force_N" in g:
-        load += f", Fz {scalar(g['applied_axial_force_N'][()]):.4g} N"
+        load += f", Fz {_g(scalar(g['applied_axial_force_N'][()]))} N"
     lines.append(f"at {data['speed_rpm']:g} rpm under the applied loads (gravity included): {load}")
     data["applied_force_N"] = F.tolist()
+    noise = float(np.max(np.abs(g["displacement_m"][:]), initial=0.0))  # deflections below its noise: 0
     if "static_stiffness_N_m" in g:
         k = scalar(g["static_stiffness_N_m"][()])
         node, dof = int(a["stiffness_node"]), str(a["stiffness_dof"])
         i = node - 1
-        disp = g["displacement_m"][i]
+        disp = clean(g["displacement_m"][i], noise)
         lines.append(f"static stiffness at node {node} {dof}: {k / 1e6:.4g} N/um; deflection there "
-                     f"x {disp[0] * 1e6:.4g} um, y {disp[1] * 1e6:.4g} um")
+                     f"x {_g(disp[0] * 1e6)} um, y {_g(disp[1] * 1e6)} um")
         data.update(stiffness_N_m=k, stiffness_node=node, deflection_m=disp.tolist())
     if "tool_tip_stiffness_N_m" in g:
         tip = int(a["tool_tip_node"])
         ks = dict(zip(g["tip_dof"][:].astype(str), g["tool_tip_stiffness_N_m"][:]))
-        disp = g["displacement_m"][tip - 1]
+        disp = clean(g["displacement_m"][tip - 1], noise)
         words = [f"{'axial' if d == 'z' else 'radial'} {d} {v / 1e6:.4g}" for d, v in ks.items()]
         lines.append(f"tool tip (node {tip}) static stiffness: {', '.join(words)} N/um; deflection there "
-                     f"x {disp[0] * 1e6:.4g} um, y {disp[1] * 1e6:.4g} um")
+                     f"x {_g(disp[0] * 1e6)} um, y {_g(disp[1] * 1e6)} um")
         data.update(tool_tip_node=tip, tool_tip_stiffness_N_m={d: float(v) for d, v in ks.items()})
     names = [str(n) for n in g["bearing_name"][:].astype(str)]
     forces = g["bearing_force_N"][:]
     data["bearing_force_N"] = {n: fb.tolist() for n, fb in zip(names, forces)}
-    for n, fb in zip(names, forces):
-        lines.append(f"  bearing {n:12s} reaction " + ", ".join(f"{v:10.4g}" for v in np.ravel(fb)[:5]) + " N")
+    shown = clean(forces, max(float(np.max(np.abs(forces), initial=0.0)), float(np.max(np.abs(F), initial=0.0))))
+    for n, fb in zip(names, shown):  # below the noise of the largest force: 0
+        lines.append(f"  bearing {n:12s} reaction " + ", ".join(f"{_g(v):>10s}" for v in np.ravel(fb)[:5]) + " N")
     return lines, data
 
 
@@ -54,7 +57,7 @@ def modal(f):
     wh = g["whirl"][:].astype(str)
     lines = [f"modes at {scalar(g.attrs['speed_rpm']):g} rpm:", "   #  frequency Hz  damping ratio   log dec  whirl"]
     for k, (a, b, c, w) in enumerate(zip(fr, z, ld, wh)):
-        lines.append(f"  {k + 1:2d}  {a:12.2f}  {b:13.4f}  {c:8.4f}  {w}" + ("   UNSTABLE" if b < 0 else ""))
+        lines.append(f"  {k + 1:2d}  {a:12.2f}  {b:13.3g}  {c:8.3g}  {w}" + ("   UNSTABLE" if b < 0 else ""))
     data = {"speed_rpm": scalar(g.attrs["speed_rpm"]), "frequency_hz": fr.tolist(), "damping_ratio": z.tolist(),
             "log_dec": ld.tolist(), "whirl": wh.tolist()}
     return lines, data
@@ -142,8 +145,8 @@ def frf(f):
     fr, h = g["frequency_hz"][:], g["receptance_m_N"][:]
     a = g.attrs
     mag = np.abs(h)
-    head = (f"node {int(a['output_node'])} {a['output_dof']} / node {int(a['input_node'])} {a['input_dof']} at "
-            f"{scalar(a['speed_rpm']):g} rpm; ")
+    head = (f"response at node {int(a['output_node'])} {a['output_dof']} / force at node {int(a['input_node'])} "
+            f"{a['input_dof']}, {scalar(a['speed_rpm']):g} rpm; ")
     data: dict[str, Any] = {"peaks": []}
     if "static_compliance_m_N" in g:
         c0 = scalar(g["static_compliance_m_N"][()])

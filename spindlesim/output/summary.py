@@ -18,6 +18,8 @@ from typing import Any, Callable
 import numpy as np
 
 from ..registry import ANALYSIS_REGISTRY
+from .labels import frequency_label, readable_keys
+from .numbers import with_resolution
 
 #: file stem (an analysis's name) -> "module:function" in spindlesim.output: the summary of that file
 SUMMARIES: dict[str, str] = {a.name: a.summary for a in ANALYSIS_REGISTRY if a.summary}
@@ -66,19 +68,20 @@ def transient(f):
              f"vibration amplitude over the last half x {amp[0] * 1e6:.4g} um, y {amp[1] * 1e6:.4g} um"
              + (" (NOT SETTLED: not a steady amplitude)" if settled is False else "")]
     data = {"duration_s": float(t[-1]), "amplitude_m": amp.tolist()}
-    lines += _transient_settling(a, data)
+    bearings = list(g.get("bearings", {}))
+    lines += _transient_settling(a, data, bearings)
     fr = g["spectrum/frequency_hz"][:] if "spectrum" in g else np.zeros(0)
     if len(fr) > 1:
         A = g["spectrum/amplitude_m"][:]
         k = int(np.argmax(np.max(A, axis=1)[1:])) + 1
         df = float(fr[1] - fr[0])
-        lines.append(f"  dominant line {fr[k]:.5g} +/- {df / 2:.2g} Hz, {np.max(A[k]) * 1e6:.4g} um"
+        lines.append(f"  dominant line {with_resolution(fr[k], df / 2, 'Hz')}, {np.max(A[k]) * 1e6:.4g} um"
                      + (" (of a response that has NOT SETTLED)" if settled is False else ""))
         data["dominant_hz"] = float(fr[k])
     elif "spectrum" in g:
         lines.append("  no spectrum: not enough steady data")
     if "poincare" in g and "periodicity" in g["poincare"].attrs:
-        lines.append("  " + _poincare_words(g["poincare"].attrs))
+        lines.append("  " + _poincare_words(g["poincare"].attrs, bearings))
         data["poincare_periodicity"] = str(g["poincare"].attrs["periodicity"])
     for key in ("roller_pass_frequency_hz", "cage_frequency_hz"):
         if key in a:
@@ -88,7 +91,7 @@ def transient(f):
     return lines, data
 
 
-def _transient_settling(a, data: dict) -> list[str]:
+def _transient_settling(a, data: dict, bearings: list[str]) -> list[str]:
     """What the file says of the steady part: settled or not, and the spectrum's resolution."""
     if "settling_note" not in a:
         return []
@@ -104,17 +107,21 @@ def _transient_settling(a, data: dict) -> list[str]:
     data["unresolved_frequencies"] = [u for u in unresolved.split(", ") if u]
     out = [f"{head}: {note}"]
     if a.get("resolution_note", ""):
-        out.append("  " + str(a["resolution_note"]).replace("window too short", "WINDOW TOO SHORT", 1))
+        note = readable_keys(str(a["resolution_note"]), bearings)
+        out.append("  " + note.replace("window too short", "WINDOW TOO SHORT", 1))
     return out
 
 
-def _poincare_words(p) -> str:
+def _poincare_words(p, bearings: list[str]) -> str:
     """The primary Poincare set's periodicity, with its tolerance, from its group's attributes."""
     label, n = str(p["periodicity"]), int(p.get("classified_points", 0))
     rel = float(p.get("relative_tolerance", np.nan))
     tol = f"tolerance {float(p['tolerance_m']):.3g} m" + (f" = {100 * rel:.2g} % of the orbit" if np.isfinite(rel)
                                                            else "")
-    s = f"Poincare {p.get('sampling', '')}: {label}"
+    sampling = str(p.get("sampling", ""))
+    if sampling.startswith("once per "):
+        sampling = "once per " + frequency_label(sampling[len("once per "):], bearings)
+    s = f"Poincare {sampling}: {label}"
     if label.startswith("period-"):
         k = int(p["period"])
         ext = float(p.get("orbit_extent_m", 0.0))

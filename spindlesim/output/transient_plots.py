@@ -24,6 +24,8 @@ import numpy as np
 from ..analysis.transient.result import TransientResult
 from ..analysis.transient.spectrum import Spectrum, amplitude_spectrum
 from .figures import new_figure
+from .labels import bearing_label, frequency_label, readable_keys
+from .numbers import with_resolution
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -33,6 +35,8 @@ UM = 1e6
 DPI = 110
 #: characteristic frequencies whose harmonics are marked on the spectrum: rolling-element passes
 PASS_SUFFIXES = ("roller_pass", "ball_pass_outer")
+#: the spectra show this many dB below their peak (an amplitude ratio of 1e-5)
+FLOOR_DB = 100.0
 _PASS_COLORS = ("tab:red", "tab:green", "tab:purple", "tab:brown")
 _LENGTH_UNITS = ((1e-3, "mm"), (1e-6, "um"), (1e-9, "nm"), (1e-12, "pm"))
 
@@ -57,7 +61,8 @@ def _title(res: TransientResult, what: str, operating: str = "", width_in: float
     if settling and st is not None and not st.settled:
         s += "\n" + st.note.replace("not settled:", "NOT SETTLED:", 1)
     if resolution and st is not None and st.resolution_note:
-        s += "\n" + st.resolution_note.replace("window too short", "WINDOW TOO SHORT", 1)
+        note = readable_keys(st.resolution_note, res.bearing_names)
+        s += "\n" + note.replace("window too short", "WINDOW TOO SHORT", 1)
     if width_in is None:
         return s
     chars = max(30, int(13 * width_in))  # about 13 characters per inch at 9 pt
@@ -122,6 +127,11 @@ def length_unit(span_m: float) -> tuple[float, str]:
         if span_m >= scale:
             return scale, name
     return _LENGTH_UNITS[-1]
+
+
+def time_unit(t_end_s: float) -> tuple[float, str]:
+    """(factor from seconds, unit) of every time axis of a figure: ms for runs under 2 s, else s."""
+    return (1e3, "ms") if t_end_s < 2.0 else (1.0, "s")
 
 
 def _steady(res: TransientResult) -> np.ndarray:
@@ -189,30 +199,31 @@ def time_figure(res: TransientResult, operating: str = "") -> Figure:
     ref = _steady(res) if _steady(res).sum() >= 2 else np.ones(t.size, bool)
     w = _window(res)
     n_rev = (t[w][-1] - t[w][0]) * _revolution_hz(res)
+    tf, tu = time_unit(float(t[-1]))
     for k, lab in enumerate(("x", "y")):
         d = res.displacement_m[:, k]
         mean = float(np.mean(d[ref]))
         scale, unit = length_unit(float(np.ptp(d)) or 1e-12)
         top, bottom = axes[0, k], axes[1, k]
         f_rev = _revolution_hz(res)
-        te, lo, hi = _band_columns(*_envelope(t, (d - mean) / scale, 1.0 / f_rev if f_rev > 0 else 0.0),
+        te, lo, hi = _band_columns(*_envelope(t * tf, (d - mean) / scale, tf / f_rev if f_rev > 0 else 0.0),
                                    pixel_columns(top))
         top.fill_between(te, lo, hi, color="tab:blue" if k == 0 else "tab:orange", lw=0.3, alpha=0.7,
                          label="min-max over one revolution" if f_rev > 0 else "min-max envelope")
         settled = res.settling is None or res.settling.settled
-        top.axvline(res.settle_s, color="0.4" if settled else "tab:red", ls="--", lw=0.8,
-                    label=f"steady part from {res.settle_s:.3g} s" + (
+        top.axvline(res.settle_s * tf, color="0.4" if settled else "tab:red", ls="--", lw=0.8,
+                    label=f"steady part from {res.settle_s * tf:.3g} {tu}" + (
                         "" if res.settling is None else " (settled)" if settled else " (NOT SETTLED)"))
         if not res.complete:
-            top.axvline(t[-1], color="tab:red", lw=1.0, label=f"run stopped at {t[-1]:.4g} s")
-        top.set_title(f"{lab}, whole run (mean of the steady part {mean * UM:.4g} um)", fontsize=9)
-        top.set_xlabel("time [s]")
+            top.axvline(t[-1] * tf, color="tab:red", lw=1.0, label=f"run stopped at {t[-1] * tf:.4g} {tu}")
+        top.set_title(f"{lab}, whole run (mean of the steady part {mean / scale:.4g} {unit})", fontsize=9)
+        top.set_xlabel(f"time [{tu}]")
         top.set_ylabel(f"{lab} - mean [{unit}]")
         top.legend(fontsize=7, loc="upper right")
-        bottom.plot(*column_extremes(t[w] * 1e3, (d[w] - mean) / scale, pixel_columns(bottom)), lw=1.0,
+        bottom.plot(*column_extremes(t[w] * tf, (d[w] - mean) / scale, pixel_columns(bottom)), lw=1.0,
                     color="tab:blue" if k == 0 else "tab:orange")
         bottom.set_title(f"{lab}, last {n_rev:.0f} revolutions" if n_rev > 0 else f"{lab}, last samples", fontsize=9)
-        bottom.set_xlabel("time [ms]")
+        bottom.set_xlabel(f"time [{tu}]")
         bottom.set_ylabel(f"{lab} - mean [{unit}]")
         for ax in (top, bottom):
             ax.grid(True, alpha=0.3)
@@ -246,7 +257,7 @@ def orbit_figure(res: TransientResult, operating: str = "") -> Figure:
     p = res.poincare[0] if res.poincare else None
     if p is not None and p.time_s.size:
         pp = (p.xy_m - centre) / scale
-        ax.plot(pp[:, 0], pp[:, 1], "o", ms=3, color="tab:red", label=f"once per {p.name}")
+        ax.plot(pp[:, 0], pp[:, 1], "o", ms=3, color="tab:red", label=f"once per {frequency_label(p.name, res.bearing_names)}")
     ax.set_aspect("equal", adjustable="datalim")
     for axis in (ax.xaxis, ax.yaxis):
         axis.set_major_locator(MaxNLocator(6))
@@ -309,14 +320,15 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
         sel = (f > 0) & (f <= fmax)
         i = int(np.argmax(np.where(sel, A[:, k], -1.0)))
         a.plot(f[i], A[i, k] / scale, "v", color="k", ms=6, gid=f"dominant:{lab}")
-        a.annotate(f"{f[i]:.5g} +/- {spec.resolution_hz / 2:.2g} Hz, {A[i, k] / scale:.3g} {unit}",
+        a.annotate(f"{with_resolution(f[i], spec.resolution_hz / 2, 'Hz')}, {A[i, k] / scale:.3g} {unit}",
                    (f[i], A[i, k] / scale), xytext=(6, 4), textcoords="offset points", fontsize=7)
         for c, (name, fr) in zip(_PASS_COLORS, passes.items()):
             n = int(fmax / fr + 1e-9)
             every = max(1, math.ceil(n / 24))
             for h in range(1, n + 1):
                 a.axvline(h * fr, color=c, ls=":", lw=0.9, gid=f"harmonic:{name}:{h}",
-                          label=(f"{name} {fr:.4g} Hz, harmonics 1..{n}" if h == 1 else None))
+                          label=(f"{frequency_label(name, res.bearing_names)} {fr:.4g} Hz, harmonics 1..{n}"
+                                 if h == 1 else None))
                 if k == 0 and (h == 1 or h % every == 0):
                     a.text(h * fr, 1.0, f"{h}x", color=c, fontsize=6, ha="center", va="bottom",
                            transform=a.get_xaxis_transform())
@@ -327,6 +339,9 @@ def spectrum_figure(res: TransientResult, modal_hz: np.ndarray | None = None, op
         for j, fm in enumerate(modal[(modal > 0) & (modal <= fmax)]):
             a.axvline(fm, color="tab:orange", ls="--", lw=0.8, label="linear modes" if j == 0 else None)
         a.set_ylabel(f"{lab} amplitude [{unit}]")
+        peak = float(np.max(A[shown, k])) / scale
+        if peak > 0:  # 100 dB below the peak: not the decades of the numerical floor
+            a.set_ylim(peak * 10 ** -(FLOOR_DB / 20), peak * 3.0)
         a.grid(True, which="major", alpha=0.3)
     ax[1].legend(fontsize=7, loc="upper right")
     if note:
@@ -397,7 +412,7 @@ def poincare_figure(res: TransientResult, operating: str = "") -> Figure:
         ax.set_ylabel(f"dx/dt - mean [{vu}/s]")
         label = "" if q is None else f"period-{q.period}" if q.periodic else q.kind
         words = "" if q is None else "\n" + textwrap.fill(_periodicity_text(p), 70)
-        ax.set_title(f"once per {p.name} ({p.frequency_hz:.4g} Hz): {label}{words}", fontsize=7.5,
+        ax.set_title(f"once per {frequency_label(p.name, res.bearing_names)} ({p.frequency_hz:.4g} Hz): {label}{words}", fontsize=7.5,
                      color="tab:red" if q is not None and q.periodic else "black")
         ax.grid(True, alpha=0.3)
     for ax in axes[len(sets):]:
@@ -420,29 +435,35 @@ def bearing_output_figure(res: TransientResult, b: int, name: str, operating: st
     fig = new_figure(10, 6.5, layout=None)
     ax = fig.subplots(2, 1)
     what = _pretty(name, units)
-    title = _title(res, f"Bearing {res.bearing_names[b]!r}: {what}", operating, 10)
+    if units == "m":  # a length in the unit that suits it (a race deflects by micrometres)
+        scale, units = length_unit(float(np.max(np.abs(values), initial=0.0)) or 1e-12)
+        values = values / scale
+    who = bearing_label(res.bearing_names[b], res.bearing_names)
+    title = _title(res, f"{who[0].upper()}{who[1:]}: {what}", operating, 10)
     _fixed(fig, title, hgap_in=0.85)
     t = res.time_s
     if not t.size:
         _no_data(ax[0], "no samples")
         return fig
-    element = "roller" if "roller" in name else "ball" if "ball" in name else "element"
+    element = "roller" if "roller" in name else "ball" if "ball" in name else "race node" if "race" in name \
+        else "element"
     V = values.reshape(len(t), -1)
     cage = min((v for k, v in res.frequencies_hz.items() if k.endswith(".cage") and v > 0), default=0.0)
     span = 6 / cage if cage > 0 else t[-1] - t[0]
     m = t >= t[-1] - span
+    tf, tu = time_unit(float(t[-1]))
     im = ax[0].imshow(V[m].T, aspect="auto", origin="lower", cmap="viridis",
-                      extent=(t[m][0], t[m][-1], 0.5, V.shape[1] + 0.5), interpolation="nearest")
+                      extent=(t[m][0] * tf, t[m][-1] * tf, 0.5, V.shape[1] + 0.5), interpolation="nearest")
     fig.colorbar(im, ax=ax[0], label=f"{what} [{units}]", fraction=0.05, pad=0.01)
-    ax[0].set_xlabel("time [s]")
+    ax[0].set_xlabel(f"time [{tu}]")
     ax[0].set_ylabel(element)
     ax[0].yaxis.set_major_locator(MaxNLocator(integer=True, nbins=8))
     ax[0].set_title(f"every {element}" + (", last 6 cage revolutions" if cage > 0 and span < t[-1] - t[0] else ""),
                     fontsize=9)
     w = _window(res, 2)
     for j in range(min(V.shape[1], 3)):
-        ax[1].plot(*column_extremes(t[w] * 1e3, V[w, j], pixel_columns(ax[1])), lw=1.0, label=f"{element} {j + 1}")
-    ax[1].set_xlabel("time [ms]")
+        ax[1].plot(*column_extremes(t[w] * tf, V[w, j], pixel_columns(ax[1])), lw=1.0, label=f"{element} {j + 1}")
+    ax[1].set_xlabel(f"time [{tu}]")
     ax[1].set_ylabel(f"{what} [{units}]")
     ax[1].set_title(f"{min(V.shape[1], 3)} {element}s, last 2 revolutions", fontsize=9)
     ax[1].legend(fontsize=7, loc="upper right")

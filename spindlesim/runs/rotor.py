@@ -55,7 +55,7 @@ def run_modal(loaded, outdir, run, opts, progress):
 
 def run_campbell(loaded, outdir, run, opts, progress):
     from ..analysis.campbell import solve_campbell
-    from ..output.rotor_plots import campbell_figure, campbell_frozen_figure
+    from ..output.campbell_plots import campbell_figure, campbell_frozen_figure
     from ..output.rotor_writers import write_campbell
 
     require_rotor(loaded, "campbell")
@@ -86,11 +86,12 @@ def run_campbell(loaded, outdir, run, opts, progress):
     paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm, cold, stiffness,
                             operating_rpm=d.operating.speed_rpm)]
     if plots_wanted(opts):
-        paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None))
+        paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None,
+                          teeth=cutter_teeth(d)))
         if frozen is not None:
             paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, frozen, frozen_rpm))
         if cold is not None:
-            from ..output.rotor_plots import campbell_thermal_figure
+            from ..output.campbell_plots import campbell_thermal_figure
 
             paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, cold, stiffness))
     if res.incomplete_reason:
@@ -114,8 +115,13 @@ def bearing_stiffness(hot, cold, speeds) -> dict:
 def excitation_orders(d) -> tuple[float, ...]:
     """The excitation orders a Campbell diagram checks: 1x (unbalance), 2x (misalignment, a shaft's
     asymmetry) and, for a deck with a milling cutter, the tooth-passing order."""
-    teeth = getattr(d.chatter, "teeth", None) if d.chatter is not None else None
+    teeth = cutter_teeth(d)
     return tuple(sorted({1.0, 2.0} | ({float(teeth)} if teeth else set())))
+
+
+def cutter_teeth(d) -> int | None:
+    """The milling cutter's number of teeth (its tooth-passing order), None without a cutter."""
+    return getattr(d.chatter, "teeth", None) if d.chatter is not None else None
 
 
 def run_frf(loaded, outdir, run, opts, progress):

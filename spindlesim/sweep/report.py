@@ -118,8 +118,31 @@ def plotted_scalars(res: SweepResult, max_panels: int = 6) -> list[str]:
     return (keys + rest)[:max_panels]
 
 
+#: a scalar that varies between the cases by at most this share of its size is drawn flat (a 0.003 %
+#: spread over the whole panel height reads as a trend that is not there)
+FLAT_SHARE = 1e-4
+
+
+def flat_limits(values: np.ndarray) -> tuple[float, float] | None:
+    """Axis limits +- 1 % of the size about the mean for values within :data:`FLAT_SHARE` of each other,
+    else None (autoscale)."""
+    v = np.asarray(values, float)
+    v = v[np.isfinite(v)]
+    size = float(np.max(np.abs(v))) if v.size else 0.0
+    if size == 0.0 or float(np.ptp(v)) > FLAT_SHARE * size:
+        return None
+    mid = float(np.mean(v))
+    return mid - 0.01 * size, mid + 0.01 * size
+
+
 def plot_scalars(res: SweepResult, path: Path, max_panels: int = 6, title: str = "") -> Path | None:
     """Key results against the first numeric parameter, one line per combination of the others."""
+    fig = scalars_figure(res, max_panels, title)
+    return None if fig is None else save_figure(fig, path)
+
+
+def scalars_figure(res: SweepResult, max_panels: int = 6, title: str = ""):
+    """The figure of :func:`plot_scalars` (None when there is nothing to plot)."""
     if not res.cases:
         return None
     names = list(res.cases[0].parameters)
@@ -147,6 +170,12 @@ def plot_scalars(res: SweepResult, path: Path, max_panels: int = 6, title: str =
         if missing:  # e.g. no converged contact pressure at a sharp roller edge
             ax.text(0.01, 0.95, f"no value in {missing} finished case(s)", transform=ax.transAxes, fontsize=7,
                     va="top", color="0.35")
+        flat = flat_limits(table[key] / scale)
+        if flat is not None:
+            v = table[key][np.isfinite(table[key])]
+            ax.set_ylim(*flat)
+            ax.text(0.99, 0.95, f"constant to {100 * np.ptp(v) / np.max(np.abs(v)):.2g} % (drawn flat)",
+                    transform=ax.transAxes, fontsize=7, va="top", ha="right", color="0.35", gid="flat")
         ax.set_ylabel(_scalar_label(key, unit), fontsize=8)
         ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, alpha=0.3)
@@ -158,7 +187,7 @@ def plot_scalars(res: SweepResult, path: Path, max_panels: int = 6, title: str =
     head = f"{title}\n" if title else ""
     note = f" ({not_done} of {len(res.cases)} cases not done: missing points)" if not_done else ""
     fig.suptitle(f"{head}Key results against {short_name(xs_name)}{note}", fontsize=10)
-    return save_figure(fig, path)
+    return fig
 
 
 def plot_overlay(res: SweepResult, analysis: str, path: Path, title: str = "") -> Path | None:

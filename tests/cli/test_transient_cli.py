@@ -142,8 +142,8 @@ def test_short_rig_run_is_periodic_but_too_short_for_the_cage(tmp_path):
         xy = np.column_stack([g["poincare/x_m"][()], g["poincare/y_m"][()]])
         assert p["spread_m"] == pytest.approx(np.max(np.linalg.norm(xy - xy.mean(axis=0), axis=1)))
         assert p["spread_m"] < p["tolerance_m"] and xy.shape[0] == p["classified_points"] >= 2
-    assert "WINDOW TOO SHORT" in r.output and "bearing.cage" in r.output
-    assert "Poincare once per bearing.roller_pass: period-1" in r.output and "NOT SETTLED" not in r.output
+    assert "WINDOW TOO SHORT" in r.output and "cage (33.2" in r.output and "bearing.cage" not in r.output
+    assert "Poincare once per roller pass: period-1" in r.output and "NOT SETTLED" not in r.output
 
 
 @pytest.mark.slow

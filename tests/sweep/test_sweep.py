@@ -143,3 +143,26 @@ def test_a_dask_sweep_is_quiet_by_default_and_logs_with_verbose(tmp_path):
     assert "distributed" not in quiet.stderr and "Traceback" not in quiet.stderr, quiet.stderr
     dask_lines = [ln for ln in verbose.stderr.splitlines() if ln.startswith("info: ") and "cheduler" in ln]
     assert dask_lines, verbose.stderr  # Dask's own INFO lines (scheduler start and close) with -v
+
+
+def test_a_scalar_constant_to_round_off_is_drawn_flat(tmp_path):
+    """A key result that varies by 0.003 % between the cases used to fill its panel's height (issue 23)."""
+    from spindlesim.sweep.cases import Case
+    from spindlesim.sweep.report import scalars_figure
+    from spindlesim.sweep.runner import DONE, SweepResult
+
+    rpm = [1000.0, 2000.0, 3000.0]
+    cases = tuple(Case(i, {"operating.speed_rpm": s}, "", "modal") for i, s in enumerate(rpm))
+    freq = [1116.72, 1116.75, 1116.70]  # 0.0045 % apart
+    damp = [0.01, 0.02, 0.03]
+    records = tuple({"status": DONE, "scalars": {"modal/frequency_hz[0]": f, "modal/damping_ratio[0]": d},
+                     "units": {"modal/frequency_hz[0]": "Hz", "modal/damping_ratio[0]": "1"}}
+                    for f, d in zip(freq, damp))
+    fig = scalars_figure(SweepResult(cases, records, (), (), tmp_path))
+    panels = {ax.get_ylabel().split(" [")[0]: ax for ax in fig.axes}
+    flat = next(ax for name, ax in panels.items() if "frequency" in name)
+    lo, hi = flat.get_ylim()
+    assert hi - lo >= 0.02 * 1116.7 * 0.99  # +- 1 %: the three points on one level (old: 0.05 Hz tall)
+    assert [t.get_text() for t in flat.texts if t.get_gid() == "flat"] == ["constant to 0.0045 % (drawn flat)"]
+    varying = next(ax for name, ax in panels.items() if "damping" in name)
+    assert not [t for t in varying.texts if t.get_gid() == "flat"] and varying.get_ylim()[1] < 0.04

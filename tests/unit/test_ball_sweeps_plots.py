@@ -65,3 +65,18 @@ def test_plots_use_the_object_api_only():
     mods = {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom)}
     assert "matplotlib.pyplot" not in names | mods and "pyplot" not in names
     assert not any(m and m.startswith("spindlesim.output") for m in mods)
+
+
+def test_rows_that_coincide_stay_distinguishable_and_the_angle_legend_says_mean():
+    """A DB pair under a radial load: both rows carry the same, their lines lie on top of each other
+    (issue 23: "ball pair rows distinguishable when they coincide", "mean over the balls" in the legend)."""
+    b = bearing()
+    sw = speed_sweep(b, np.array([0.0, 5000.0, 10000.0]) * RPM, np.array([1000.0, 0, 0, 0, 0]))
+    np.testing.assert_allclose(sw.contact_angle_inner_deg[:, 0], sw.contact_angle_inner_deg[:, 1], rtol=1e-6)
+    fig = plots.plot_contact_angles_vs_speed(sw)
+    ax = fig.axes[0]
+    rows = {ln.get_label(): ln for ln in ax.get_lines()}
+    one, two = rows["inner, row 1"], rows["inner, row 2"]
+    assert (one.get_linewidth(), one.get_marker()) != (two.get_linewidth(), two.get_marker())
+    assert two.get_zorder() > one.get_zorder() and one.get_linewidth() > two.get_linewidth()  # the thin one on top
+    assert "mean over the balls" in ax.get_legend().get_title().get_text()

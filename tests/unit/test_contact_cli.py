@@ -88,3 +88,18 @@ def test_bad_deck_exits_2_and_writes_nothing(tmp_path):
     res = CliRunner().invoke(command, [str(deck), "-o", str(tmp_path / "o")])
     assert res.exit_code == 2
     assert not (tmp_path / "o").exists()
+
+
+def test_pressure_map_title_reads_the_load_in_newtons():
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from spindlesim.contact.plots import pressure_map_figure
+
+    x, y = np.linspace(-1e-4, 1e-4, 5), np.linspace(-1e-3, 1e-3, 9)
+    p = np.outer(1 - (x / 1e-4) ** 2, 1 - (y / 1e-3) ** 2) * 1e9
+    r = SimpleNamespace(x_m=x, y_m=y, pressure_Pa=p, edge_singular=False, max_location_m=(0.0, 0.0),
+                        max_pressure_Pa=1e9, load_N=10e3)
+    assert pressure_map_figure(r).axes[0].get_title() == "Contact pressure: load 10,000 N"  # old: 1e+04 N
+    assert pressure_map_figure(SimpleNamespace(**{**vars(r), "load_N": 250.0})).axes[0].get_title().endswith("250 N")

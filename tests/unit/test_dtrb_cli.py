@@ -126,3 +126,24 @@ bearings:
     assert K2.shape == (2, 2) and np.allclose(K2, K[:2, :2]) and "z" not in two.dofs.names
     with pytest.raises(DeckError):
         parse_deck(text.replace("rollers_per_row: 20", "rollers_per_row: 2"), "rotor.yaml")
+
+
+def test_load_distribution_titles_explain_the_counts_and_ticks_avoid_the_curves():
+    """The panel title used to read "loaded rollers 20/7" beside a closed cup curve (issue 23)."""
+    from spindlesim.bearings.dtrb.plots import plot_load_distribution, quiet_azimuth_deg
+    from spindlesim.bearings.dtrb.results import DtrbState
+
+    psi = np.linspace(0, 2 * np.pi, 20, endpoint=False)
+    Qo = np.stack([800 + 700 * np.cos(psi), 300 + 250 * np.cos(psi)])
+    Qi = np.stack([Qo[0], np.where(np.cos(psi) > 0.3, Qo[1], 0.0)])
+    st = DtrbState.__new__(DtrbState)
+    object.__setattr__(st, "psi_rad", np.stack([psi, psi]))
+    object.__setattr__(st, "outer_load_N", Qo)
+    object.__setattr__(st, "inner_load_N", Qi)
+    fig = plot_load_distribution([("applied load", st)])
+    ax = fig.axes[0]
+    n2 = int(np.sum(Qi[1] > 1e-3))
+    assert ax.get_title().endswith(f"rollers the cone loads: row 1 20 of 20, row 2 {n2} of 20")
+    quiet = quiet_azimuth_deg(st)  # the loads peak at 0 deg: labels on the far side, on an oblique radius
+    assert np.cos(np.radians(quiet)) < -0.7 and abs(np.sin(np.radians(quiet))) >= 0.6
+    assert ax.get_rlabel_position() == pytest.approx(quiet)

@@ -140,3 +140,29 @@ def test_without_load_N_the_load_comes_from_the_rotor_static_equilibrium(tmp_pat
                                        rtol=1e-6, atol=1e-6)
             assert "temperature_mean_C" not in f[f"thermal/{name}"]  # isoviscous, no density: no heat balance
             assert "temperature_mean_C" in f[f"thermal/{name}"].attrs["not_computed"]
+
+
+def test_coefficient_chart_legends_sit_off_the_curves():
+    """The characteristic charts' legends used to sit on the curves (issue 23); cyx lay hidden under cxy."""
+    import numpy as np
+
+    from spindlesim.bearings.fluidfilm.plots import characteristics_figure
+
+    S = np.logspace(-1, 2, 12)
+    M = np.zeros((12, 2, 2))
+    M[:, 0, 0], M[:, 1, 1], M[:, 0, 1], M[:, 1, 0] = 3 * S, 5 * S, 0.1 * S, 0.1 * S
+    curves = {"S": S, "eccentricity_ratio": 0.7 / (1 + S), "inlet_flow": 5 + 0 * S, "side_flow": 0.5 / (1 + S),
+              "attitude_angle_deg": 55 + 0 * S, "friction_ratio": 10 * S, "k": M, "c": M}
+    fig = characteristics_figure(curves, mark_S=2.0)
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
+    assert len(legends) == 3
+    for ax in fig.axes:
+        if ax.get_legend() is not None:
+            box, leg = ax.get_window_extent(r), ax.get_legend().get_window_extent(r)
+            assert leg.y1 <= box.y0, ax.get_title()  # under the panel, not on its curves
+    texts = [t.get_text() for t in legends[0].get_texts()]
+    assert texts == ["e / Cb", "inlet Q/(R Cp N L)", "side Qs/(R Cp N L)"]  # one legend for both axes
+    c_lines = {ln.get_label(): ln.get_linestyle() for ln in fig.axes[3].get_lines() if ln.get_label().startswith("c")}
+    assert c_lines["cyx"] == "--" and c_lines["cxy"] == "-"

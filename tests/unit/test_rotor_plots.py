@@ -1,9 +1,13 @@
 """The rotor plots say what the results hold (issue 16, item 9): checked on the figures' artists."""
 
+import dataclasses
+
 import numpy as np
+import pytest
 
 from spindlesim.analysis.results import CampbellResult
-from spindlesim.output.rotor_plots import campbell_figure, modes_figure
+from spindlesim.output.campbell_plots import campbell_figure
+from spindlesim.output.rotor_plots import modes_figure
 
 
 def _campbell(log_dec_shift=0.0, critical=()):
@@ -76,3 +80,90 @@ def test_frf_phase_is_unwrapped():
     r = solve_frf(rotor, np.linspace(10, 5000, 800), 1, "x", 1, "x")
     phase = frf_magnitude_phase_figure(r).axes[1].lines[0].get_ydata()
     assert np.max(np.abs(np.diff(phase))) < 180.0  # no false +-360 jumps (a light mode turns 100 deg in a step)
+
+
+# Campbell diagrams read at a glance (issue 23, section 5)
+
+def _split_pair_campbell():
+    """Like seed 003: a low mode, a split pair (backward 1117, forward 1119 Hz) and two pairs far above
+    every excitation line (1830, 3153 Hz); orders 1x, 2x and a 4-tooth cutter."""
+    from spindlesim.analysis.resonance import find_crossings
+
+    s = np.linspace(200, 12000, 30)
+    f = np.stack([17 + 0 * s, 1117 - 1e-4 * s, 1119 + 1e-4 * s, 1829 + 0 * s, 1832 + 0 * s, 3153 + 0 * s], axis=1)
+    whirl = np.array([["forward", "backward", "forward", "backward", "forward", "backward"]] * len(s))
+    ld = np.stack([3.85 + 0 * s, 0.003 + 1e-6 * s, 0.004 + 1e-6 * s, 0.03 + 0 * s, 0.03 + 0 * s, 0.05 + 0 * s], axis=1)
+    zeta = ld / (2 * np.pi)
+    cross = find_crossings(s, f, zeta, whirl, (1.0, 2.0, 4.0), (2170.0, 2170.0))
+    return CampbellResult(speed_rpm=s, frequency_hz=f, log_dec=ld, damping_ratio=zeta, whirl=whirl,
+                          critical_speeds_rpm=np.zeros(0), critical_modes=np.zeros(0, int), crossings=cross)
+
+
+def test_campbell_split_pair_markers_do_not_merge():
+    fig = campbell_figure(_split_pair_campbell(), operating_rpm=2170.0, teeth=4)
+    ax = fig.axes[0]
+    fwd = next(ln for ln in ax.lines if ln.get_gid() == "whirl:forward:3")
+    bwd = next(ln for ln in ax.lines if ln.get_gid() == "whirl:backward:2")
+    assert fwd.get_marker() == "^" and bwd.get_marker() == "v"
+    xf, xb = set(fwd.get_xdata()), set(bwd.get_xdata())
+    assert xf and xb and not xf & xb  # never on top of each other (a star): forward and backward alternate
+    assert len(xf | xb) == 30
+    assert bwd.get_markerfacecolor() in ("white", (1.0, 1.0, 1.0, 1.0)) and fwd.get_markerfacecolor() != "white"
+
+
+def test_campbell_frequency_axis_shows_the_excitation_lines_and_names_the_modes_above():
+    fig = campbell_figure(_split_pair_campbell(), operating_rpm=2170.0, teeth=4)
+    ax = fig.axes[0]
+    top = ax.get_ylim()[1]
+    assert 1119 * 1.05 < top < 1400  # the pair nearest the 4x line whole, not the 3153 Hz mode (old: 3405)
+    assert 200.0 / top > 0.15  # the 1x line ends at 200 Hz: a sixth of the height at least
+    note = [t.get_text() for t in ax.texts if t.get_gid() == "hidden-modes"]
+    assert note == ["above the axis: modes 4-6 (1829-3153 Hz; log dec below)"]
+    labels = [t.get_text() for leg in fig.legends for t in leg.get_texts()]
+    assert "4x tooth passing" in labels and "mode 6" in labels
+
+
+def test_campbell_log_dec_panel_neither_clipped_nor_collapsed():
+    r = _split_pair_campbell()
+    fig = campbell_figure(r)
+    ax2 = fig.axes[1]
+    bottom, top = ax2.get_ylim()
+    assert top >= 2 * 3.85  # the largest log dec is not on the edge (old: 1.3 x)
+    to_axes = lambda y: ax2.transLimits.transform(ax2.transScale.transform((1.0, y)))[1]  # noqa: E731
+    assert to_axes(0.0) < 0.15  # every mode stable: no empty negative half (old: 0 at 0.4 of the height)
+    assert to_axes(0.003) - to_axes(0.0) > 0.1  # the least damped mode well clear of the zero line
+    unstable = dataclasses.replace(r, log_dec=r.log_dec - 0.02)
+    b, t = campbell_figure(unstable).axes[1].get_ylim()
+    assert b <= 2 * np.min(unstable.log_dec) and t >= 2 * np.max(unstable.log_dec)
+
+
+def test_frf_magnitude_starts_at_the_static_compliance():
+    from spindlesim.analysis.frf import solve_frf
+    from spindlesim.analysis.points import OperatingPoints
+    from spindlesim.deck import default_deck
+    from spindlesim.model.build import build_rotor
+    from spindlesim.output.rotor_plots import frf_magnitude_phase_figure
+
+    points = OperatingPoints(build_rotor(default_deck("spindle_linear").deck))
+    r = solve_frf(points, np.linspace(50, 5000, 200), 1, "x", 1, "x", speed_rpm=2170.0)
+    assert r.static_compliance_m_N is not None
+    ax = frf_magnitude_phase_figure(r).axes[0]
+    dot = [ln for ln in ax.get_lines() if ln.get_gid() == "static"]
+    assert len(dot) == 1 and list(dot[0].get_xdata()) == [0.0]  # the grid starts at 50 Hz, the axis at 0
+    assert dot[0].get_ydata()[0] == pytest.approx(abs(r.static_compliance_m_N) * 1e6)
+    assert ax.get_xlim()[0] == 0.0
+
+
+def test_static_title_states_the_axial_load():
+    from spindlesim.analysis.points import OperatingPoints
+    from spindlesim.analysis.static import solve_static
+    from spindlesim.deck import load_deck
+    from spindlesim.model.build import build_rotor
+    from spindlesim.output.rotor_plots import static_figure
+
+    from pathlib import Path
+
+    deck = load_deck(Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml").deck
+    r = solve_static(OperatingPoints(build_rotor(deck)))
+    title = static_figure(r).axes[0].get_title()
+    assert title.startswith("Static deflection under Fx 0 N, Fy -2000 N, Fz 2000 N (applied"), title  # old: no Fz

@@ -1,6 +1,7 @@
 """Result summaries on the terminal (issue 16, item 8): text by default, --quiet, --json."""
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -8,6 +9,8 @@ from click.testing import CliRunner
 
 from spindlesim.cli import main
 from spindlesim.analysis.resonance import required_separation_margin
+
+DECKS = Path(__file__).parents[2] / "decks"
 
 
 @pytest.mark.parametrize("af,below,expect", [
@@ -107,3 +110,48 @@ def test_first_unstable_is_the_lowest_speed_with_negative_damping():
     assert res.first_unstable == (1, 1)
     stable = CampbellResult(**{**res.__dict__, "damping_ratio": np.abs(np.nan_to_num(z))})
     assert stable.first_unstable is None
+
+
+# Numbers rounded to what they mean (issue 23, section 4)
+
+def test_numbers_below_the_noise_print_as_zero_and_never_minus_zero():
+    from spindlesim.output.numbers import clean, g
+
+    assert clean([-1.529, 2.784e-14, 0.5294, -3.024e-14]).tolist() == [-1.529, 0.0, 0.5294, 0.0]
+    assert clean([4.4e-20, 2.0e-6], reference=2.0e-6)[0] == 0.0
+    assert clean([1e-3, 2.0]).tolist() == [1e-3, 2.0]  # a small value above the noise stays
+    assert g(-0.0) == "0" and g(clean([-1e-20, 1.0])[0]) == "0" and g(-2.5) == "-2.5"
+
+
+@pytest.mark.parametrize("value,half,expect", [
+    (266.68, 2.78, "267 +/- 3 Hz"),  # 5.56 Hz bin
+    (266.68, 5.5, "267 +/- 6 Hz"),  # 11 Hz bin
+    (84.43, 0.14, "84.43 +/- 0.14 Hz"),  # a leading 1 keeps two digits
+    (1234.567, 0.025, "1234.57 +/- 0.03 Hz"),
+    (3333.3, 14.0, "3333 +/- 14 Hz"),
+])
+def test_a_spectral_line_is_printed_to_its_resolution(value, half, expect):
+    from spindlesim.output.numbers import with_resolution
+
+    assert with_resolution(value, half, "Hz") == expect
+
+
+def test_static_summary_prints_no_round_off(tmp_path):
+    out = _run(tmp_path, "static", str(DECKS / "seed001_dtrb_rotor.yaml"))  # old: x 4.442e-14 um, reaction 3.229e-12, -0
+    rows = [ln for ln in out.splitlines() if ("reaction" in ln or "deflection" in ln) and not ln.endswith(".png")]
+    assert len(rows) == 5
+    for ln in rows:
+        assert "e-1" not in ln and "-0," not in ln and not ln.rstrip(" N").endswith("-0"), ln
+    assert "deflection there x 0 um, y 2.768 um" in out
+    assert "bearing acbb         reaction          0,     -588.5 N" in out
+
+
+def test_frf_summary_says_which_dof_responds_and_which_is_forced(tmp_path):
+    out = _run(tmp_path, "frf", str(DECKS / "seed001_dtrb_rotor.yaml"))
+    assert "response at node 5 x / force at node 9 x, 3000 rpm" in out
+
+
+def test_modal_damping_has_significant_digits(tmp_path):
+    out = _run(tmp_path, "modal", str(DECKS / "milling_spindle.yaml"), "--modes", "2")  # an axial mode, zeta 1.5e-05
+    rows = [ln.split() for ln in out.splitlines() if ln.strip()[:2].strip().isdigit() and "Hz" not in ln]
+    assert [r[2] for r in rows] == ["1.49e-05", "0.00889"]  # old: 0.0000, 0.0089

@@ -80,3 +80,71 @@ def test_the_transient_command_imports_no_plotting_or_optimisation_library():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "[]"
+
+
+# Transient figures an engineer reads at a glance (issue 23, section 5)
+
+@pytest.fixture(scope="module")
+def rig_run():
+    """0.1 s of the transient rig (8 rollers, rigid race; its one bearing is named "bearing" inside)."""
+    from spindlesim.deck import default_deck
+    from spindlesim.runs.transient import rig_setup
+
+    rotor, settings = rig_setup(default_deck("transient").deck.transient, {"duration_s": 0.1})
+    return simulate(rotor, settings)
+
+
+def _all_texts(fig):
+    out = [t.get_text() for t in fig.texts] + [fig._suptitle.get_text() if fig._suptitle else ""]
+    for ax in fig.axes:
+        out += [ax.get_title(), ax.get_xlabel(), ax.get_ylabel()] + [t.get_text() for t in ax.texts]
+        leg = ax.get_legend()
+        out += [t.get_text() for t in leg.get_texts()] if leg else []
+    return out
+
+
+def test_spectrum_shows_100_db_below_its_peak_not_the_numerical_floor(rig_run):
+    fig = tp.spectrum_figure(rig_run)
+    for ax in fig.axes[:2]:
+        line = ax.get_lines()[0]
+        bottom, top = ax.get_ylim()
+        peak = float(np.max(line.get_ydata()))
+        assert bottom == pytest.approx(peak * 1e-5, rel=1e-6)  # 100 dB (old: 8-9 decades of round-off)
+        assert top > peak  # the dominant line's marker and label inside the panel
+
+
+def test_transient_figures_have_no_developer_labels_and_one_time_unit(rig_run):
+    res = rig_run
+    assert res.bearing_names == ("bearing",)
+    figures = [tp.spectrum_figure(res), tp.poincare_figure(res), tp.orbit_figure(res), tp.time_figure(res),
+               tp.bearing_output_figure(res, 0, "roller_load_N")]
+    texts = [t for fig in figures for t in _all_texts(fig)]
+    assert not [t for t in texts if "bearing.roller_pass" in t or "bearing.cage" in t or "Bearing 'bearing'" in t]
+    assert any(t.startswith("roller pass 265.8 Hz") for t in texts)
+    assert any(t.startswith("once per roller pass (265.8 Hz)") for t in texts)
+    assert any(t.startswith("267 +/- 8 Hz") for t in texts)  # the dominant line to its 16.7 Hz bin (old: 266.7 +/- 8.3)
+    for fig in figures[3:]:  # time figure and bearing output: every time axis in one unit
+        units = {ax.get_xlabel() for ax in fig.axes if ax.get_xlabel().startswith("time")}
+        assert units == {"time [ms]"}, units
+    assert figures[4]._suptitle.get_text().startswith("Bearing: roller load")
+
+
+def test_frequency_labels_name_the_bearing_only_among_several():
+    from spindlesim.output.labels import bearing_label, frequency_label, readable_keys
+
+    assert frequency_label("bearing.roller_pass", ["bearing"]) == "roller pass"
+    assert frequency_label("front.ball_pass_outer", ["front", "rear"]) == "ball pass (outer race) (front)"
+    assert frequency_label("revolution", ["front", "rear"]) == "revolution"
+    assert bearing_label("rear", ["front", "rear"]) == "bearing 'rear'" and bearing_label("bearing", ["bearing"]) == "bearing"
+    assert readable_keys("too short: bearing.cage (33.2 Hz)", ["bearing"]) == "too short: cage (33.2 Hz)"
+
+
+def test_race_deflection_is_drawn_in_micrometres(rig_run):
+    import dataclasses
+
+    t = rig_run.time_s
+    race = 2e-6 * np.sin(np.outer(t * 2 * np.pi * 33.0, np.ones(12)) + np.arange(12))  # +-2 um on 12 race nodes
+    outputs = ({**rig_run.bearing_outputs[0], "race_deflection_m": (race, "m")},)
+    fig = tp.bearing_output_figure(dataclasses.replace(rig_run, bearing_outputs=outputs), 0, "race_deflection_m")
+    assert fig.axes[1].get_ylabel() == "race deflection [um]" and fig.axes[0].get_ylabel() == "race node"
+    assert np.max(np.abs(fig.axes[1].get_lines()[0].get_ydata())) == pytest.approx(2.0, rel=0.05)  # old: 2e-06 m

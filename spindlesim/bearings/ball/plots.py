@@ -27,6 +27,15 @@ def _figure(w: float, h: float) -> Figure:
     return fig
 
 
+def row_style(k: int, n: int) -> dict:
+    """Line style of row ``k`` against a sweep of ``n`` points: the first row wide and pale under the
+    others, each later row thinner with its own marker, so rows that carry the same (a DB pair under a
+    radial load) read as two lines on top of each other, not one."""
+    marks = ("", "o", "s", "^")
+    return dict(color=COLORS[k % 4], lw=3.2 if k == 0 else 1.3, alpha=0.45 if k == 0 else 1.0,
+                marker=marks[k % 4] or None, ms=4, mfc="none", markevery=max(1, n // 8), zorder=2 + k)
+
+
 def _row_label(state_or_sweep, k: int) -> str:
     z = getattr(state_or_sweep, "row_z_m", None)
     s = int(state_or_sweep.row_sign[k])
@@ -113,8 +122,8 @@ def _stiffness_panels(fig: Figure, x: np.ndarray, sweep: BallSweep, x_label: str
         if i == 1:
             tw = ax.twinx()
             for k in range(sweep.row_sign.size):
-                tw.plot(x, sweep.row_axial_load_N[:, k], ":", color=COLORS[k % 4], lw=1.2,
-                        label=f"thrust row {k + 1} [N]")
+                tw.plot(x, sweep.row_axial_load_N[:, k], ls=":", label=f"thrust row {k + 1} [N]",
+                        **row_style(k, len(x)))
             tw.set_ylabel("row thrust [N]")
             thrust = sweep.row_axial_load_N
             if np.ptp(thrust) <= 1e-6 * max(1.0, float(np.max(np.abs(thrust)))):  # constant: no round-off scale
@@ -152,20 +161,20 @@ def plot_contact_angles_vs_speed(sweep: BallSweep, title: str = "") -> Figure:
         for data, style, lab in ((sweep.contact_angle_inner_deg, "-", "inner"),
                                  (sweep.contact_angle_outer_deg, "--", "outer")):
             d = data[:, k, :]
-            ax.plot(x, d.mean(axis=1), style, color=c, lw=1.4, label=f"{lab}, row {k + 1}")
+            ax.plot(x, d.mean(axis=1), ls=style, label=f"{lab}, row {k + 1}", **row_style(k, len(x)))
             if np.ptp(d, axis=1).max() > 1e-6:
                 ax.fill_between(x, d.min(axis=1), d.max(axis=1), color=c, alpha=0.12, lw=0)
         for data, style, lab in ((sweep.element_load_inner_N, "-", "Q_i max"),
                                  (sweep.element_load_outer_N, "--", "Q_o max")):
-            ax2.plot(x, data[:, k, :].max(axis=1), style, color=c, lw=1.4, label=f"{lab}, row {k + 1}")
+            ax2.plot(x, data[:, k, :].max(axis=1), ls=style, label=f"{lab}, row {k + 1}", **row_style(k, len(x)))
     cut = np.any(sweep.truncated_inner | sweep.truncated_outer, axis=(1, 2))
     if np.any(cut):
         ax.plot(x[cut], np.max(sweep.contact_angle_inner_deg[cut], axis=(1, 2)), "kx", ms=7,
                 label="contact ellipse truncated")
     ax.set_xlabel("speed [rpm]")
-    ax.set_ylabel("contact angle [deg] (band: range over the balls)")
+    ax.set_ylabel("contact angle [deg]")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, title="lines: mean over the balls\nbands: range over the balls", title_fontsize=7)
     ax2.set_xlabel("speed [rpm]")
     ax2.set_ylabel("largest contact load [N]")
     ax2.grid(True, alpha=0.3)

@@ -27,7 +27,12 @@ def _figure(w: float, h: float) -> Figure:
 
 
 def plot_load_distribution(states: Sequence[tuple[str, DtrbState]]) -> Figure:
-    """Cup load Q_o of every roller against its azimuth, one polar panel per state (seed 001 Figs. 9, 11)."""
+    """Cup load Q_o of every roller against its azimuth, one polar panel per state (seed 001 Figs. 9, 11);
+    each title counts the rollers the cone (inner ring) loads in each row: at speed an unloaded roller
+    still presses on the cup with its centrifugal force, so the cup curve is closed even where it is not
+    loaded.  The radial tick labels sit at the azimuth with the smallest loads."""
+    from matplotlib.ticker import MaxNLocator
+
     n = max(1, len(states))
     cols = min(3, n)
     rows = (n + cols - 1) // cols
@@ -38,12 +43,30 @@ def plot_load_distribution(states: Sequence[tuple[str, DtrbState]]) -> Figure:
             psi = np.append(st.psi_rad[row], st.psi_rad[row][0])
             q = np.append(st.outer_load_N[row], st.outer_load_N[row][0])
             ax.plot(psi, q, "-o", color=color, ms=3, lw=1.2, label=label)
-        ax.set_title(f"{title}\nloaded rollers {st.loaded_rollers()[0]}/{st.loaded_rollers()[1]}", fontsize=9)
+        loaded = st.loaded_rollers()
+        per_row = [np.size(st.outer_load_N[r]) for r in range(2)]
+        ax.set_title(f"{title}\nrollers the cone loads: row 1 {loaded[0]} of {per_row[0]}, "
+                     f"row 2 {loaded[1]} of {per_row[1]}", fontsize=9)  # the rest press on the cup at speed only
+        ax.set_rlabel_position(quiet_azimuth_deg(st))
+        ax.yaxis.set_major_locator(MaxNLocator(4))
         ax.tick_params(labelsize=7)
         if i == 0:
             ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=7)
     fig.suptitle("Roller load Q_o [N] on the cup against azimuth psi (X at 0 deg)", fontsize=10)
     return fig
+
+
+def quiet_azimuth_deg(st: DtrbState) -> float:
+    """The azimuth [deg] where the larger of the two rows' loads is smallest, among the oblique ones (a
+    horizontal radius runs its labels together): the radial tick labels go there, off the curves."""
+    grid = np.linspace(0.0, 2 * np.pi, 72, endpoint=False)
+    grid = grid[np.abs(np.sin(grid)) >= 0.6]
+    top = np.zeros_like(grid)
+    for row in range(2):
+        psi, q = np.asarray(st.psi_rad[row], float), np.asarray(st.outer_load_N[row], float)
+        order = np.argsort(np.mod(psi, 2 * np.pi))
+        top = np.maximum(top, np.interp(grid, np.mod(psi, 2 * np.pi)[order], q[order], period=2 * np.pi))
+    return float(np.degrees(grid[int(np.argmin(top))]))
 
 
 def plot_stiffness_sweep(sweep: DtrbSweep, components: Sequence[tuple[int, int, str]], x_scale: float,

@@ -34,7 +34,8 @@ def _figure(w: float, h: float) -> Figure:
 def characteristics_figure(curves: dict, title: str = "", mark_S: float | None = None) -> Figure:
     """Four panels vs S (log axis): eps & flows, attitude & f/psi, k (on Cp), c (on Cp).
 
-    ``mark_S`` draws a vertical line at an operating Sommerfeld number.
+    ``mark_S`` draws a vertical line at an operating Sommerfeld number.  The legends sit under their
+    panels' axis labels, off the curves (:func:`_legend_below`).
     """
     fig = _figure(11.0, 8.0)
     axs = fig.subplots(2, 2)
@@ -46,8 +47,7 @@ def characteristics_figure(curves: dict, title: str = "", mark_S: float | None =
     a2.semilogx(S, curves["inlet_flow"], "b--", label="inlet Q/(R Cp N L)")
     a2.semilogx(S, curves["side_flow"], "b:", label="side Qs/(R Cp N L)")
     a2.set_ylabel("nondimensional flow")
-    a.legend(loc="upper right", fontsize=8)
-    a2.legend(loc="center right", fontsize=8)
+    _legend_below(a, a.get_lines() + a2.get_lines(), 3)
     a.set_title("Eccentricity ratio and nondimensional oil flows (cf. seed 003 Fig. 1)", fontsize=9)
     b = axs[0, 1]
     b.semilogx(S, curves["attitude_angle_deg"], "k-")
@@ -59,12 +59,12 @@ def characteristics_figure(curves: dict, title: str = "", mark_S: float | None =
     names = (("xx", 0, 0), ("xy", 0, 1), ("yx", 1, 0), ("yy", 1, 1))
     for ax, key, label in ((axs[1, 0], "k", "k = K Cp / W"), (axs[1, 1], "c", "c = B Cp omega / W")):
         M = curves[key]
-        for nm, i, j in names:
-            ax.semilogx(S, M[:, i, j], label=f"{key}{nm}")
+        for nm, i, j in names:  # yx dashed: equal to xy (symmetric damping) it shows under it
+            ax.semilogx(S, M[:, i, j], ls="--" if nm == "yx" else "-", label=f"{key}{nm}")
         ax.axhline(0.0, color="0.6", lw=0.5)
         ax.set_yscale("symlog", linthresh=1.0)  # k, c grow like 1/W: keep small S readable
         ax.set_ylabel(label + " (symlog)")
-        ax.legend(fontsize=8, ncol=2)
+        _legend_below(ax, ax.get_lines()[:4], 4)
         ax.set_title(("Stiffness" if key == "k" else "Damping")
                      + " coefficients, x horizontal / y vertical (Figs. 3-4)", fontsize=9)
     for ax in axs.ravel():
@@ -75,6 +75,12 @@ def characteristics_figure(curves: dict, title: str = "", mark_S: float | None =
     if title:
         fig.suptitle(title)
     return fig
+
+
+def _legend_below(ax, lines, ncol: int) -> None:
+    """One legend for ``lines`` under ``ax``'s x label (the layout engine makes room for it)."""
+    ax.legend(lines, [ln.get_label() for ln in lines], loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=ncol,
+              fontsize=8, frameon=False)
 
 
 def pressure_figure(result: FilmResult, title: str = "") -> Figure:
