@@ -161,3 +161,21 @@ def test_prescribed_temperatures_and_the_thermal_section_exclude_each_other():
     with pytest.raises(DeckError) as exc:
         parse_deck(yaml.safe_dump(d), "mill.yaml")
     assert any("bearings[0].temperatures_C" in str(i) and "exclude each other" in str(i) for i in exc.value.issues)
+
+
+def test_a_speed_sweep_starts_from_its_neighbours_extrapolated(spindle):
+    """Operating points solve each speed's loop from the nearest speed's temperatures extrapolated linearly
+    from the next nearest: the same equilibrium as a start from the ambient (within a few loop tolerances,
+    0.01 K each) in fewer passes than a start from the nearest speed alone."""
+    from spindlesim.analysis.points import OperatingPoints
+
+    points = OperatingPoints(spindle.rotor, spindle.model)
+    for rpm in (4000.0, 6000.0):
+        points.thermal_state(rpm)
+    swept = points.thermal_state(8000.0)
+    cold = spindle.steady(8000.0)
+    nearest = spindle.steady(8000.0, start=points.thermal_state(6000.0))
+    for name in ("bearing:front:inner", "bearing:front:outer", "bearing:rear:inner", "motor:stator"):
+        assert swept.temperatures_C[name] == pytest.approx(cold.temperatures_C[name], abs=0.05), name
+    assert _front_thrust(swept) == pytest.approx(_front_thrust(cold), rel=2e-3)
+    assert swept.iterations < nearest.iterations < cold.iterations
