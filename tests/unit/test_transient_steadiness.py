@@ -186,3 +186,12 @@ def test_speed_ramp_and_missing_steady_part_are_not_settled():
 def test_no_vibration_is_settled():
     s = judge(lambda t: np.full((t.size, 2), 1e-5) + 1e-22 * RNG.standard_normal((t.size, 2)))
     assert s.settled and "no vibration above the numerical noise" in s.note
+
+
+def test_percentages_below_the_noise_read_as_such():
+    """Issue 23 (terminal output): a settled response printed "RMS -5e-05 %"; fractions below 0.01 % are
+    "under 0.01 %", larger ones keep two digits (whole percent from 10 %)."""
+    from spindlesim.analysis.transient.steadiness import _pct
+
+    assert _pct(-5e-7) == _pct(3e-5) == "under 0.01 %"
+    assert (_pct(0.0123), _pct(-0.0456), _pct(0.5)) == ("1.2 %", "-4.6 %", "50 %")

@@ -222,7 +222,10 @@ def _ringing(spec: Spectrum, modes: LinearModes | None, settle_s: float, peak: f
 
 
 def _pct(x: float) -> str:
+    """A fraction as a percentage to two digits; below 0.01 % (the steadiness tests' noise) "under 0.01 %"."""
     p = 100 * x
+    if abs(p) < 0.01:
+        return "under 0.01 %"
     return f"{p:.0f} %" if abs(p) >= 10 else f"{p:.2g} %"
 
 
