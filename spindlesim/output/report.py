@@ -70,6 +70,22 @@ CAPTIONS: dict[str, str] = {
     "dtrb_load_distribution": "Roller load distribution",
     "dtrb_stiffness_preload": "Stiffness over preload",
     "dtrb_stiffness_radial": "Stiffness over radial load",
+    "campbell_thermal": "Campbell diagram at the spindle's thermal equilibrium of every speed beside the cold "
+                        "bearings, with the bearings' radial stiffness",
+    "thermal_speeds": "Thermal equilibrium over speed: ring and motor temperatures, operating preload, tool-tip "
+                      "axial drift; the runaway speed marked",
+    "thermal_warm_up": "Warm-up through the speed steps: temperatures, preload, tool-tip axial drift (ISO 230-3 "
+                       "style), natural frequencies and the minimum stable depth of cut",
+    "chatter_simulation_": "Time-domain simulation of the cut (vibration, spectrum, once-per-tooth Poincare set), "
+                           "check",
+    "ball_load_distribution": "Ball loads and contact angles around the bearing",
+    "ball_contact_ellipses": "Contact ellipses of the balls against the raceway shoulders",
+    "ball_stiffness_vs_preload": "Bearing stiffness over preload",
+    "ball_stiffness_vs_speed": "Bearing stiffness over speed",
+    "ball_contact_angles_vs_speed": "Contact angles over speed (mean over the balls, band: their range)",
+    "sweep_scalars": "Key results of the sweep's cases",
+    "sweep_": "Every case of the sweep on one figure:",
+    "transient_": "Bearing output in time:",
 }
 #: summary words that deserve a reader's eye
 _ALERT = re.compile(r"UNSTABLE|NOT MET|WARNING|INCOMPLETE|CHATTER|EDGE STRESS")
