@@ -73,6 +73,7 @@ UNIT_RANGES: dict[str, tuple[float, float]] = {
     "_m2": (0.0, 1e4),
     "_W_m2K": (0.0, 1e6),
     "_deg": (-1e4, 1e4),
+    "_mrad": (-1e3, 1e3),           # held tilts of a bearing ring
     "_g_mm": (0.0, 1e8),
     "_percent": (0.0, 100.0),
     "_W_mK": (0.0, 1e4),            # thermal conductivity

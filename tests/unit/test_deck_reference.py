@@ -81,3 +81,12 @@ def test_schema_command_writes_the_json_schema_with_descriptions_and_the_markdow
     res = CliRunner().invoke(main, ["schema", "--markdown", "-o", str(tmp_path / "reference.md")])
     assert res.exit_code == 0, res.output
     assert (tmp_path / "reference.md").read_text(encoding="utf-8") == deck_reference()
+
+
+def test_tilt_keys_in_mrad_carry_their_unit():
+    """Issue 23: the held tilts `theta_x_mrad` / `theta_y_mrad` showed no unit in the reference."""
+    from spindlesim.fields import unit_range, unit_text
+
+    assert unit_range("theta_x_mrad")[0] == "_mrad" and unit_text("_mrad") == "mrad"
+    text = (Path(__file__).parents[2] / "docs" / "deck-reference.md").read_text()
+    assert "| `bearing.held.theta_x_mrad` | number | mrad |" in text
