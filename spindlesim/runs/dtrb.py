@@ -28,7 +28,7 @@ def _range(r) -> np.ndarray:
 
 def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, progress=None) -> list[Path]:
     from ..bearings.dtrb.plots import plot_load_distribution, plot_stiffness_sweep
-    from ..bearings.dtrb.section import geometry_from
+    from ..bearings.dtrb.section import at_deck_temperatures, geometry_from
     from ..output.drawing import draw
     from ..output.dtrb_writer import write_dtrb
 
@@ -40,7 +40,12 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
     speed = RPM * float(opts.get("speed_rpm", sec.speed_rpm))
     do_sweeps = bool(opts.get("sweeps", True))
     load = np.asarray(sec.load.vector(), float)
-    bearing = DtrbBearing(geometry_from(sec.bearing), preload)
+    bearing = at_deck_temperatures(DtrbBearing(geometry_from(sec.bearing), preload), sec.temperatures_C,
+                                   sec.bearing.material)
+    shift = bearing.preload_m - preload  # the growth's change of delta0, applied to the swept preloads too
+    if shift:
+        log.info("DTRB at temperature: preload %.4g um -> %.4g um", preload * 1e6, bearing.preload_m * 1e6)
+        preload = bearing.preload_m
     g = bearing.geometry
 
     n_pre = sec.preload_sweep_um.count if (do_sweeps and sec.preload_sweep_um) else 0
@@ -59,7 +64,7 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
     log.info("DTRB equilibrium: d = %s, loaded rollers %s", st.displacement, st.loaded_rollers())
     sweeps: dict[str, DtrbSweep] = {}
     if n_pre:
-        values = 1e-6 * _range(sec.preload_sweep_um)
+        values = 1e-6 * _range(sec.preload_sweep_um) + shift
         sweeps["preload_sweep"] = bearing.preload_sweep(values, load, speed)
         tick(n_pre)
     if n_rad:
@@ -67,7 +72,7 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
         tick(n_rad)
     polar = [("applied load", st)]
     for p in sec.polar_preloads_um:
-        polar.append((f"delta0 = {p:g} um", bearing.with_preload(1e-6 * p).equilibrium(load, speed)))
+        polar.append((f"delta0 = {p:g} um", bearing.with_preload(1e-6 * p + shift).equilibrium(load, speed)))
     for fx in sec.polar_radial_loads_N:
         L = load.copy()
         L[0] = fx

@@ -55,6 +55,17 @@ class DtrbBearing(BearingBase):
                            axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
                            dof_names=self.dof_names)
 
+    def at_temperatures(self, temperatures, body=None) -> "DtrbBearing":
+        """This bearing with the preload delta0 its parts' growth at ``temperatures``
+        (``thermal.growth_bearings.BearingTemperatures``) gives: delta0 + the change of
+        ``thermal.growth_bearings.dtrb_preload_change`` (``body``: rings' and rollers' ``ThermoElastic``,
+        default bearing steel).  A preload that growth takes below zero is a clearance (negative delta0)."""
+        from ...thermal.growth import BEARING_STEEL
+        from ...thermal.growth_bearings import dtrb_preload_change
+
+        change = dtrb_preload_change(self.geometry, temperatures, BEARING_STEEL if body is None else body)
+        return self.with_preload(self.preload_m + change.preload_change_m)
+
     # ---- inertia (eqs. 31-32) -------------------------------------------------------
     def inertia_load(self, speed_rad_s: float) -> np.ndarray:
         """(Fc cos gamma, -Fc sin gamma, -Mg) on each roller: eqs. 31-32 in the roller frame."""

@@ -1,0 +1,77 @@
+"""A DTRB at prescribed temperatures (issue 22, item 3: "likewise the axial preload of a DTRB"): the deck key
+`temperatures_C` of the `dtrb:` section and of a rotor's `type: dtrb` entry gives the bearing the preload
+delta0 its growth gives (thermal/growth_bearings.dtrb_preload_change, checked there).
+
+* A uniform temperature changes nothing (every part grows about the same centre by the same strain).
+* Cones 10 K warmer than the cup (rollers between) press into the rollers: delta0 rises by the growth
+  function's change, and the bearing's radial and axial stiffness under the same load rise with it; cones
+  colder than the cup lower both (the change is odd in the ring temperature difference, to first order).
+* The rotor entry and the section take the same path; the material's expansion coefficient scales the
+  change (half the coefficient, half the change).
+"""
+
+import numpy as np
+import pytest
+
+from spindlesim.bearings.dtrb.bearing import DtrbBearing
+from spindlesim.bearings.dtrb.section import DtrbMaterial, DtrbTemperatures, at_deck_temperatures, geometry_from
+from spindlesim.deck import default_deck
+from spindlesim.thermal.growth import BEARING_STEEL
+from spindlesim.thermal.growth_bearings import BearingTemperatures, dtrb_preload_change
+
+LOAD = np.array([5000.0, 0.0, 5000.0, 0.0, 0.0])
+
+
+@pytest.fixture(scope="module")
+def section():
+    return default_deck("dtrb").deck.dtrb
+
+
+def _at(section, inner, outer, rollers, material=None):
+    b = DtrbBearing(geometry_from(section.bearing), 30e-6)
+    t = DtrbTemperatures(inner_ring=inner, outer_ring=outer, rolling_elements=rollers)
+    return b, at_deck_temperatures(b, t, material or section.bearing.material)
+
+
+def test_uniform_temperature_keeps_the_preload(section):
+    b, hot = _at(section, 60.0, 60.0, 60.0)
+    assert hot.preload_m == pytest.approx(b.preload_m, abs=1e-15)
+
+
+def test_warm_cones_raise_the_preload_and_the_stiffness(section):
+    b, warm = _at(section, 40.0, 30.0, 35.0)
+    _, cold = _at(section, 30.0, 40.0, 35.0)
+    ref = dtrb_preload_change(b.geometry, BearingTemperatures(40.0, 30.0, 35.0), BEARING_STEEL).preload_change_m
+    assert ref > 5e-6  # about 17 um on the default deck's bearing
+    assert warm.preload_m == pytest.approx(b.preload_m + ref, rel=1e-12)
+    assert cold.preload_m == pytest.approx(b.preload_m - ref, rel=1e-9)
+    k = {}
+    for name, brg in (("base", b), ("warm", warm), ("cold", cold)):
+        st = brg.equilibrium(LOAD, 0.0)
+        K = brg.stiffness(st.displacement)
+        k[name] = (K[0, 0], K[2, 2])
+    assert k["warm"][0] > k["base"][0] > k["cold"][0] and k["warm"][1] > k["base"][1] > k["cold"][1]
+
+
+def test_expansion_coefficient_scales_the_change(section):
+    b, steel = _at(section, 40.0, 30.0, 35.0)
+    half = DtrbMaterial(thermal_expansion_1_K=0.5 * BEARING_STEEL.expansion_1_K)
+    _, low = _at(section, 40.0, 30.0, 35.0, half)
+    assert low.preload_m - b.preload_m == pytest.approx(0.5 * (steel.preload_m - b.preload_m), rel=1e-9)
+
+
+def test_rotor_entry_takes_the_temperatures():
+    import yaml
+
+    from spindlesim.deck import parse_deck
+    from spindlesim.model.build import build_rotor
+    from pathlib import Path
+
+    path = Path(__file__).parents[2] / "decks" / "seed001_dtrb_rotor.yaml"
+    d = yaml.safe_load(path.read_text())
+    entry = next(e for e in d["bearings"] if e["type"] == "dtrb")
+    cold = [b for b in build_rotor(parse_deck(yaml.safe_dump(d), "a.yaml").deck).bearings if b.name == entry["name"]][0]
+    entry["temperatures_C"] = {"inner_ring": 40.0, "outer_ring": 30.0, "rolling_elements": 35.0}
+    warm = [b for b in build_rotor(parse_deck(yaml.safe_dump(d), "b.yaml").deck).bearings if b.name == entry["name"]][0]
+    ref = dtrb_preload_change(cold.geometry, BearingTemperatures(40.0, 30.0, 35.0), BEARING_STEEL).preload_change_m
+    assert warm.preload_m == pytest.approx(cold.preload_m + ref, rel=1e-12)
