@@ -414,18 +414,15 @@ class BallBearing(BearingBase):
         """(q, evaluation, iterations) with reaction(q) + load = 0 on the free DOFs (:mod:`.equilibrium`)."""
         return eq.solve(self, load, speed, phi, q0, max_iter, held)
 
-    def equilibrium(self, load, speed: float = 0.0, cage_angle: float = 0.0) -> np.ndarray:
-        """Inner-ring displacement q (5) carrying ``load`` (what the shaft puts on the bearing)."""
-        return self._equilibrium(load, float(speed), float(cage_angle))[0].copy()
-
-    def state(self, load, speed: float = 0.0, cage_angle: float = 0.0, held: Held = FREE, q0=None) -> BallState:
-        """Equilibrium under ``load`` (Fx, Fy, Fz [N], Mx, My [N m]) at ``speed`` [rad/s], with results;
-        ``held``: DOFs held at prescribed displacements (their load components must be 0); ``q0``: a start."""
+    def solve(self, load, speed: float = 0.0, cage_angle: float = 0.0, held: Held = FREE, q0=None) -> BallState:
+        """The state under ``load`` (Fx, Fy, Fz [N], Mx, My [N m], what the shaft puts on the bearing) at
+        ``speed`` [rad/s]: the equilibrium with its results; ``held``: DOFs held at prescribed displacements
+        (their load components must be 0); ``q0``: a start."""
         q, ev, its = self._equilibrium(load, float(speed), float(cage_angle), q0, held=held)
         return self._state(q, ev, float(speed), float(cage_angle), its, load, held)
 
-    def state_at(self, q, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
-        """Results at a given inner-ring displacement q (5)."""
+    def at(self, q, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
+        """The state at a given inner-ring displacement q (5): evaluated, nothing solved."""
         qq = np.array(q, float)
         return self._state(qq, self._evaluate(qq, float(speed), float(cage_angle)), float(speed),
                            float(cage_angle), 0)

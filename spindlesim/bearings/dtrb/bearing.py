@@ -2,8 +2,9 @@
 
 Sign conventions: ``reaction(d)`` is the force/moment the bearing exerts on the shaft
 (inner ring) at the ring displacement d = (dX, dY, dZ, phiX, phiY); ``stiffness(d)`` is
-K = -dF/dd; ``equilibrium(load)`` finds d with reaction(d) + load = 0, ``load`` being
-the (FX, FY, FZ, MX, MY) the shaft puts on the bearing.  ``preload_m`` is delta0 of
+K = -dF/dd; ``solve(load)`` finds d with reaction(d) + load = 0, ``load`` being
+the (FX, FY, FZ, MX, MY) the shaft puts on the bearing, and returns the state there; ``at(d)``
+evaluates the state at a displacement.  ``preload_m`` is delta0 of
 seed 001 eq. 10: each cone is pushed towards the bearing centre by delta0 (total axial
 interference 2 delta0).  Speeds in rad/s (inner ring, outer ring fixed).
 """
@@ -92,7 +93,8 @@ class DtrbBearing(BearingBase):
         _, T, sol = self._solve(np.asarray(displacement, float), speed_rad_s, angle_rad)
         return stiffness_from(T, self._ops, sol)
 
-    def state(self, displacement, speed_rad_s: float = 0.0, angle_rad: float = 0.0, roller_guess=None) -> DtrbState:
+    def at(self, displacement, speed_rad_s: float = 0.0, angle_rad: float = 0.0, roller_guess=None) -> DtrbState:
+        """The state at a given ring displacement (5): evaluated, no ring equilibrium solved."""
         d = np.asarray(displacement, float)
         psi, T, sol = self._solve(d, speed_rad_s, angle_rad, roller_guess)
         return self._state(d, psi, T, sol, speed_rad_s, sol.iterations, sol.converged)
@@ -121,9 +123,10 @@ class DtrbBearing(BearingBase):
                              np.zeros((psi.size, g.n_contacts)), np.tile(k, (psi.size, 1)), 0, True, 0.0)
         return np.diag(stiffness_from(T, self._ops, sol))
 
-    def equilibrium(self, load, speed_rad_s: float = 0.0, angle_rad: float = 0.0, d0=None,
-                    max_iter: int = 200) -> DtrbState:
-        """Ring displacement where reaction(d) + load = 0 (damped Newton on the 5 DOFs)."""
+    def solve(self, load, speed_rad_s: float = 0.0, angle_rad: float = 0.0, d0=None,
+              max_iter: int = 200) -> DtrbState:
+        """The state under ``load``: the ring displacement where reaction(d) + load = 0 (damped Newton on
+        the 5 DOFs) with its results."""
         g = self.geometry
         L = np.asarray(load, float)
         d = np.zeros(5) if d0 is None else np.array(d0, float)
@@ -158,7 +161,7 @@ class DtrbBearing(BearingBase):
 
     def linearized_full(self, speed_rad_s: float, load_N) -> np.ndarray:
         """5x5 stiffness at the equilibrium under ``load_N`` (FX, FY, FZ, MX, MY)."""
-        return self.equilibrium(load_N, speed_rad_s).stiffness
+        return self.solve(load_N, speed_rad_s).stiffness
 
     def full_load(self, static_load) -> np.ndarray:
         """(FX, FY, FZ, MX, MY) on the bearing: ``static_load`` on ``dof_names`` plus, for a radial
@@ -182,7 +185,7 @@ class DtrbBearing(BearingBase):
 
     def static_displacement(self, speed: float, static_load=None) -> np.ndarray:
         """Ring displacement at the equilibrium under the static (and the deck's axial) load."""
-        return self.equilibrium(self.full_load(static_load), speed).displacement[: len(self.dof_names)].copy()
+        return self.solve(self.full_load(static_load), speed).displacement[: len(self.dof_names)].copy()
 
     def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "DtrbBearing":
         """A radial (x, y) bearing holds axial motion and tilt at the equilibrium under the static
@@ -190,7 +193,7 @@ class DtrbBearing(BearingBase):
         if len(self.dof_names) == 5:
             return self
         out = self.with_preload(self.preload_m)
-        out._held = self.equilibrium(self.full_load(static_load), speed).displacement[2:].copy()
+        out._held = self.solve(self.full_load(static_load), speed).displacement[2:].copy()
         return out
 
     def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
@@ -214,7 +217,7 @@ class DtrbBearing(BearingBase):
     # ---- sweeps (seed 001 Figs. 8 and 10) --------------------------------------------------
     def preload_sweep(self, preloads_m, load_N, speed_rad_s: float = 0.0) -> DtrbSweep:
         return _sweep("preload_m", preloads_m,
-                      lambda v: self.with_preload(v).equilibrium(load_N, speed_rad_s))
+                      lambda v: self.with_preload(v).solve(load_N, speed_rad_s))
 
     def load_sweep(self, component: int, values_N, load_N, speed_rad_s: float = 0.0) -> DtrbSweep:
         base = np.asarray(load_N, float)
@@ -222,7 +225,7 @@ class DtrbBearing(BearingBase):
         def run(v):
             L = base.copy()
             L[component] = v
-            return self.equilibrium(L, speed_rad_s)
+            return self.solve(L, speed_rad_s)
 
         return _sweep(["FX_N", "FY_N", "FZ_N", "MX_Nm", "MY_Nm"][component], values_N, run)
 
