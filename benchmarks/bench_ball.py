@@ -4,9 +4,10 @@ Bearing: the embedded default deck (7014C-size DB pair, 18 x 12.7 mm balls, 15 d
 preload 21 um).  Timings are the best of --repeat batches of --number calls, wall and process CPU.
 
 - "state, cold": ``BallBearing.solve(load, speed)`` (set Newton, every ball from its built-in start,
-  ISO lives, pressures), the warm-start memory cleared before each call;
-- "state, warm": the same with the previous call's ball centres as starts (a sweep or time step);
-- "force_and_tangent": reaction and 5x5 tangent at one displacement (transient / static solver use);
+  ISO lives, pressures): what every call does unless given a warm start;
+- "state, warm": the same with the previous call's ball centres as starts, passed in (a ``Work``: a sweep);
+- "force_and_tangent": reaction and 5x5 tangent at one displacement (transient / static solver use; every
+  ball from its built-in start);
 - "linearized": the contract's pitch-averaged tangent (4 cage positions, 4 equilibria).
 
 Then studies: speed effects under position and spring preload, the model options, the size of the
@@ -26,6 +27,7 @@ import time
 import numpy as np
 import yaml
 
+from spindlesim.bearings.ball.bearing import Work
 from spindlesim.bearings.ball import BallSection, default_deck_text
 from spindlesim.bearings.ball import kernel as kn
 from spindlesim.bearings.ball.section import build
@@ -54,23 +56,16 @@ def timings(repeat: int, number: int) -> None:
             w = rpm * RPM
 
             def cold():
-                b._X[:] = np.nan
                 return b.solve(LOAD, w)
 
             wall, cpu = best(cold, repeat, number)
             flag = "ok" if cpu * 1e3 < TARGET_MS else "SLOW"
             print(f"{'state+tangent cold, ' + model + f', {rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}  {flag}")
-            wall, cpu = best(lambda: b.solve(LOAD, w), repeat, number)
+            work = Work(b)  # the balls' warm starts, passed in
+            wall, cpu = best(lambda: b.solve(LOAD, w, work=work), repeat, number)
             print(f"{'state+tangent warm, ' + model + f', {rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
         q = b.solve(LOAD, 15000 * RPM).displacement
         wall, cpu = best(lambda: b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0), repeat, 5 * number)
-        print(f"{'force_and_tangent warm, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
-
-        def fat_cold():
-            b._X[:] = np.nan
-            return b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0)
-
-        wall, cpu = best(fat_cold, repeat, 5 * number)
         print(f"{'force_and_tangent cold, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
         wall, cpu = best(lambda: b.linearized(15000 * RPM, LOAD), repeat, max(1, number // 5))
         print(f"{'linearized (4 cage positions), ' + model:44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")

@@ -65,6 +65,34 @@ class Held:
 FREE = Held()
 
 
+class Work:
+    """What one call carries from one evaluation of the set to the next, never kept on the bearing: each
+    ball's centre (its Newton start; NaN: the built-in start), the floating outer rings' axial shift (None:
+    from the spring force) and the kernel parameters at the speed.  Each solve or evaluation makes its own."""
+
+    def __init__(self, bearing: "BallBearing"):
+        g = bearing.geometry
+        self.centres = np.full((g.rows, g.balls, 2), np.nan)
+        self.shift: float | None = None
+        self._params: tuple["BallBearing", float, np.ndarray] | None = None
+
+    def params(self, b: "BallBearing", om: float) -> np.ndarray:
+        """The kernel parameters of ``b`` at the speed om: A_r grown by its ``speed_growth``."""
+        if b.speed_growth is None or om == 0.0:
+            return b._p
+        if self._params is None or self._params[0] is not b or self._params[1] != om:
+            from . import kernel as kn  # not at import: a deck that reads Held stays light
+
+            p = b._p.copy()
+            p[kn.A_RAD0] += float(b.speed_growth(om))
+            self._params = (b, om, p)
+        return self._params[2]
+
+    def forget(self) -> None:
+        """Back to the built-in starts (after a failed evaluation)."""
+        self.centres[:] = np.nan
+
+
 def reference_stiffness(geometry) -> np.ndarray:
     """Diagonal scale of the Levenberg-Marquardt damping of the set Newton: every ball at 1 um
     approach, the same for every DOF once tilts are measured at the groove-centre radius (a
@@ -86,9 +114,10 @@ def check_held(bearing, load: np.ndarray, held: Held) -> None:
                              f"it ({load[k]:g}); a held DOF carries what holds it (the holding load)")
 
 
-def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE):
+def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE, work=None):
     """(q, evaluation, iterations) with reaction(q) + load = 0 on the free DOFs, the held DOFs at
-    their values (damped Newton; ``bearing`` a :class:`~.bearing.BallBearing`)."""
+    their values (damped Newton; ``bearing`` a :class:`~.bearing.BallBearing`; ``work``: the call's
+    :class:`~.bearing.Work`, its warm starts from evaluation to evaluation)."""
     g = bearing.geometry
     L = np.asarray(load, float)
     check_held(bearing, L, held)
@@ -111,7 +140,7 @@ def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100,
     q[mask] = np.asarray(held.values, float)[mask]
     ref = reference_stiffness(g)
     lam = 1e-4
-    ev = bearing._evaluate(q, speed, phi)
+    ev = bearing._evaluate(q, speed, phi, work)
     if dofs.size == 0:
         return q, ev, 0
     # the reaction's noise follows the rows' own forces, not only the external load: a position
@@ -132,7 +161,7 @@ def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100,
         if big > 1.0:
             step /= big
         trial = q + step
-        evt = bearing._evaluate(trial, speed, phi)
+        evt = bearing._evaluate(trial, speed, phi, work)
         rt = evt.f + L
         mt = float(np.linalg.norm((rt * wgt)[dofs]))
         # equal merit is accepted: inside a clearance the reaction does not change

@@ -32,12 +32,13 @@ DOFS_5 = FIVE
 class DtrbBearing(BearingBase):
     """Quasi-static DTRB of seed 001 section 2-1, implementing the bearing contract.
 
-    Immutable after construction, except the warm-start hint of ``force_and_tangent`` (the
-    previous roller solution, a Newton start only: results do not depend on it)."""
+    Immutable after construction: a warm start of the rollers is passed in (``roller_guess`` of
+    :meth:`reaction_and_stiffness` and :meth:`at`); ``held``: z, phiX, phiY of a radial (x, y)
+    bearing, fixed at an operating point (:meth:`at_operating_point`)."""
 
     def __init__(self, geometry: DtrbGeometry, preload_m: float = 0.0, *, name: str = "dtrb", node: int = 0,
                  axial_load_N: float = 0.0, row_offset_rad: Sequence[float] = (0.0, 0.0),
-                 dof_names: Sequence[str] = DOFS_2):
+                 dof_names: Sequence[str] = DOFS_2, held: Sequence[float] = (0.0, 0.0, 0.0)):
         self.geometry = geometry
         self.preload_m = float(preload_m)
         self.name = name
@@ -48,13 +49,15 @@ class DtrbBearing(BearingBase):
             raise ValueError(f"dof_names must be {DOFS_2} or {DOFS_5}")
         self.dof_names = tuple(dof_names)
         self._ops = operators(geometry)
-        self._warm: np.ndarray | None = None  # roller solution of the last force_and_tangent call (start hint only)
-        self._held = np.zeros(3)  # z, phiX, phiY of a radial (x, y) bearing (at_operating_point)
+        self._held = np.array(held, float)  # z, phiX, phiY of a radial (x, y) bearing (at_operating_point)
+        if self._held.shape != (3,):
+            raise ValueError("held needs z, phiX and phiY")
 
-    def with_preload(self, preload_m: float) -> "DtrbBearing":
+    def with_preload(self, preload_m: float, held: Sequence[float] = (0.0, 0.0, 0.0)) -> "DtrbBearing":
+        """The same bearing at another preload (``held``: as in the constructor)."""
         return DtrbBearing(self.geometry, preload_m, name=self.name, node=self.node,
                            axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
-                           dof_names=self.dof_names)
+                           dof_names=self.dof_names, held=held)
 
     # ---- inertia (eqs. 31-32) -------------------------------------------------------
     def inertia_load(self, speed_rad_s: float) -> np.ndarray:
@@ -192,20 +195,18 @@ class DtrbBearing(BearingBase):
         load and the deck's axial load; a 5-DOF bearing has nothing to hold."""
         if len(self.dof_names) == 5:
             return self
-        out = self.with_preload(self.preload_m)
-        out._held = self.solve(self.full_load(static_load), speed).displacement[2:].copy()
-        return out
+        return self.with_preload(self.preload_m, held=self.solve(self.full_load(static_load), speed).displacement[2:])
 
     def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
         """Contract: (force on the shaft, K_t = -df/dq, C_t = 0) on ``dof_names`` at the node
         displacement q, roller azimuths advanced by the cage angle (eq. 3: cage ratio times the
-        shaft angle).  The previous call's roller solution is the Newton start."""
+        shaft angle).  The rollers' Newton starts from its built-in guess (no call history: a warm
+        start is passed to :meth:`reaction_and_stiffness`)."""
         q = np.asarray(q, float)
         d = np.zeros(5)
         d[2:] = self._held
         d[: q.size] = q
-        F, K, u = self.reaction_and_stiffness(d, speed, shaft_angle(speed, t, angle), roller_guess=self._warm)
-        self._warm = u
+        F, K, _ = self.reaction_and_stiffness(d, speed, shaft_angle(speed, t, angle))
         n = q.size
         return F[:n], K[:n, :n], np.zeros((n, n))
 
