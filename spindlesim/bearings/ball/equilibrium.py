@@ -11,9 +11,10 @@ L: load of the shaft on the bearing).  On a held DOF the load L_k must be 0 (the
 load there); the holding load H_k = -f_k(q) is what the constraint must put on the bearing, so
 that the bearing carries L + H in all.
 
-Newton with Levenberg-Marquardt damping lambda D (D: every ball at 1 um approach, the same for
-every DOF once tilts are measured at the groove-centre radius R_i), steps capped at 20 um at the
-balls, converged when every free component of the residual is <= 1e-10 of the load scale.
+The one damped Newton (``bearings.statics.damped_newton``) with Levenberg-Marquardt damping lambda D
+(D: every ball at 1 um approach, the same for every DOF once tilts are measured at the groove-centre
+radius R_i), steps capped at 20 um at the balls, converged when every free component of the residual
+is <= 1e-10 of the load scale.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..base import FIVE
+from ..statics import damped_newton
 
 
 class BallEquilibriumError(ArithmeticError):
@@ -138,8 +140,6 @@ def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100,
     dofs = np.flatnonzero(free)
     q = np.zeros(5) if q0 is None else np.array(q0, float)
     q[mask] = np.asarray(held.values, float)[mask]
-    ref = reference_stiffness(g)
-    lam = 1e-4
     ev = bearing._evaluate(q, speed, phi, work)
     if dofs.size == 0:
         return q, ev, 0
@@ -148,31 +148,25 @@ def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100,
     # own equilibrium is solved to about 1e-11 of them (seed 001's pair under a 0.25 N load at
     # 6000 rpm: the same q gave -1.4e-9 and -3.4e-9 N, with 461 N in a row)
     tol = max(tol, 1e-11 * float(np.max(np.abs(ev.rows.f_rows * wgt))))
-    r = ev.f + L
-    merit = float(np.linalg.norm((r * wgt)[dofs]))  # acceptance: weighted 2-norm (descent of LM)
-    worst = float(np.max(np.abs((r * wgt)[dofs])))  # convergence: every component
-    for it in range(1, max_iter + 1):
-        if worst <= tol:
-            return q, ev, it - 1
-        A = ev.K[np.ix_(dofs, dofs)] + lam * np.diag(ref[dofs])
-        step = np.zeros(5)
-        step[dofs] = np.linalg.solve(A, r[dofs])
-        big = float(np.max(np.abs(step / wgt))) / 20e-6
-        if big > 1.0:
-            step /= big
-        trial = q + step
-        evt = bearing._evaluate(trial, speed, phi, work)
-        rt = evt.f + L
-        mt = float(np.linalg.norm((rt * wgt)[dofs]))
-        # equal merit is accepted: inside a clearance the reaction does not change
-        if mt <= merit:
-            q, ev, r, merit = trial, evt, rt, mt
-            worst = float(np.max(np.abs((r * wgt)[dofs])))
-            lam = max(lam * 0.01, 1e-14)
-        else:
-            lam *= 10.0
-            if lam > 1e10:
-                break
+    w = wgt[dofs]
+
+    def residual(qq, e):
+        return (e.f + L)[dofs], e.K[np.ix_(dofs, dofs)], (qq, e)
+
+    def evaluate(x):
+        qq = q.copy()
+        qq[dofs] = x
+        return residual(qq, bearing._evaluate(qq, speed, phi, work))
+
+    # acceptance: the weighted 2-norm (descent of LM; equal merit taken: inside a clearance the reaction does
+    # not change); convergence: every weighted component
+    out = damped_newton(evaluate, q[dofs], converged=lambda r, _: float(np.max(np.abs(r * w))) <= tol,
+                        merit=lambda r: float(np.linalg.norm(r * w)), cap=20e-6 * w,
+                        damping=reference_stiffness(g)[dofs], lam0=1e-4, shrink=0.01, grow=10.0, lam_max=1e10,
+                        max_iter=max_iter, evaluated=residual(q, ev))
+    if out.converged:
+        return out.data[0], out.data[1], out.iterations
+    worst = float(np.max(np.abs(out.R * w)))
     raise BallEquilibriumError(
         f"bearing {bearing.name!r}: no set equilibrium under the load {np.round(L, 6).tolist()} (N, N m) at "
         f"{speed * 30 / math.pi:.6g} rpm, cage angle {math.degrees(phi):.3g} deg ({bearing.preload.label()}; "

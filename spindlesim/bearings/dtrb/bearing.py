@@ -18,6 +18,7 @@ from typing import Sequence
 import numpy as np
 
 from ..base import FIVE, RADIAL, BearingBase, shaft_angle
+from ..statics import damped_newton
 from .geometry import DtrbGeometry
 from .reactions import azimuths, projection, reaction_from, ring_motion, stiffness_from
 from .results import DtrbState, DtrbSweep
@@ -128,39 +129,33 @@ class DtrbBearing(BearingBase):
 
     def solve(self, load, speed_rad_s: float = 0.0, angle_rad: float = 0.0, d0=None,
               max_iter: int = 200) -> DtrbState:
-        """The state under ``load``: the ring displacement where reaction(d) + load = 0 (damped Newton on
-        the 5 DOFs) with its results."""
+        """The state under ``load``: the ring displacement where reaction(d) + load = 0 with its results
+        (the one damped Newton of ``bearings.statics`` on the 5 DOFs; a warm start ``d0`` is passed in, the
+        rollers' solution carried from one evaluation to the next).  Every step is taken (``monotone=False``):
+        with a row unloading, |R| can rise along the path Newton needs (seed 001 Fig. 8 at 10 um preload under
+        FX = FZ = 5 kN: refusing such steps stalls the solve at 1.6 kN)."""
         g = self.geometry
         L = np.asarray(load, float)
-        d = np.zeros(5) if d0 is None else np.array(d0, float)
-        ref = self._reference_stiffness()
-        lam = 1e-3
-        scale = np.array([1.0, 1.0, 1.0, g.pitch_diameter_m, g.pitch_diameter_m])  # length scale of each DOF
-        force_scale = max(1.0, float(np.abs(L[:3]).max()), float(np.abs(L[3:]).max() / g.pitch_diameter_m))
-        u = None
-        converged = False
-        it = 0
-        for it in range(1, max_iter + 1):
-            psi, T, sol = self._solve(d, speed_rad_s, angle_rad, u)
-            u = sol.u
-            F = reaction_from(T, g, sol)
-            K = stiffness_from(T, self._ops, sol)
-            r = F + L
-            if np.all(np.abs(r / np.array([1, 1, 1, g.pitch_diameter_m, g.pitch_diameter_m])) < 1e-9 * force_scale) \
-                    and it > 1:
-                converged = True
-                break
-            step = np.linalg.solve(K + lam * np.diag(ref), r)
-            cap = 20e-6
-            big = np.abs(step * scale).max()
-            if big > cap:
-                step *= cap / big
-            d = d + step
-            lam = max(lam * 0.1, 1e-12)
-        if not converged:
+        pd = g.pitch_diameter_m
+        w = np.array([1.0, 1.0, 1.0, 1.0 / pd, 1.0 / pd])  # moments as forces at the pitch diameter
+        force_scale = max(1.0, float(np.abs(L[:3]).max()), float(np.abs(L[3:]).max() / pd))
+        rollers = [None]  # the last roller solution: the next evaluation's start
+
+        def evaluate(d):
+            psi, T, sol = self._solve(d, speed_rad_s, angle_rad, rollers[0])
+            rollers[0] = sol.u
+            return reaction_from(T, g, sol) + L, stiffness_from(T, self._ops, sol), (psi, T, sol)
+
+        out = damped_newton(evaluate, np.zeros(5) if d0 is None else d0,
+                            converged=lambda r, _: bool(np.all(np.abs(r * w) < 1e-9 * force_scale)),
+                            merit=lambda r: float(np.linalg.norm(r * w)), cap=20e-6 * w,
+                            damping=self._reference_stiffness(), lam0=1e-3, shrink=0.1, lam_min=1e-12, grow=10.0,
+                            max_iter=max_iter, monotone=False)
+        if not out.converged:
             raise ArithmeticError(f"DTRB equilibrium did not converge in {max_iter} iterations "
-                                  f"(residual {np.abs(r).max():.3g})")
-        return self._state(d, psi, T, sol, speed_rad_s, it, converged)
+                                  f"(residual {np.abs(out.R).max():.3g})")
+        psi, T, sol = out.data
+        return self._state(out.x, psi, T, sol, speed_rad_s, out.iterations, True)
 
     def linearized_full(self, speed_rad_s: float, load_N) -> np.ndarray:
         """5x5 stiffness at the equilibrium under ``load_N`` (FX, FY, FZ, MX, MY)."""
