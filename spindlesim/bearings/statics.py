@@ -37,8 +37,8 @@ def damped_newton(evaluate: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray,
                   cap: np.ndarray | float, damping: np.ndarray | None = None, lam0: float = 1e-3,
                   shrink: float = 0.2, lam_min: float = 1e-14, grow: float = 8.0, lam_max: float = 1e12,
                   max_iter: int = 200, stalled: Callable[[np.ndarray, float, float], bool] | None = None,
-                  evaluated: tuple[np.ndarray, np.ndarray, Any] | None = None, monotone: bool = True
-                  ) -> NewtonResult:
+                  evaluated: tuple[np.ndarray, np.ndarray, Any] | None = None,
+                  floor: Callable[[np.ndarray, Any], bool] | None = None) -> NewtonResult:
     """Levenberg-Marquardt damped Newton with step acceptance (module note).
 
     ``evaluate(x) -> (R, J, data)``: residual, tangent (the step solves (J + lam D) dx = R) and anything
@@ -49,9 +49,8 @@ def damped_newton(evaluate: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray,
     ``lam_min``) after a step taken and by ``grow`` after one refused (or a singular matrix), and the
     solve gives up beyond ``lam_max`` or after ``max_iter`` iterations; ``stalled(R, merit_before,
     merit_after)``: a step taken that ends the solve (at the round-off floor of the residual);
-    ``evaluated``: ``evaluate(x0)`` when the caller has it; ``monotone=False`` takes every finite step (the
-    merit then only reports), for a problem whose Newton path must cross a rise of the merit (the DTRB
-    ring with a row unloading, whose tangent makes the damped step no descent direction of |R| there).
+    ``evaluated``: ``evaluate(x0)`` when the caller has it; ``floor(R, data)``: when a step is refused, the
+    current point is at the round-off floor of the residual (noise of an inner solve): the solve ends there.
     Returns the last point taken; the caller raises its own error when ``converged`` is False.
     """
     x = np.array(x0, float)
@@ -75,13 +74,15 @@ def damped_newton(evaluate: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray,
             trial = x + step
             Rt, Jt, dt = evaluate(trial)
             mt = merit(Rt)
-            if np.all(np.isfinite(Rt)) and (mt <= m * (1.0 + 1e-12) or not monotone):
+            if np.all(np.isfinite(Rt)) and mt <= m * (1.0 + 1e-12):
                 before = m
                 x, R, J, data, m = trial, Rt, Jt, dt, mt
                 lam = max(lam * shrink, lam_min)
                 if stalled is not None and stalled(R, before, m):
                     return NewtonResult(x, R, J, data, it, True)
                 continue
+        if floor is not None and floor(R, data):
+            return NewtonResult(x, R, J, data, it, True)
         lam *= grow
         if lam > lam_max:
             break

@@ -27,9 +27,12 @@ SETTINGS = dict(converged=lambda r, _: abs(r[0]) <= 1e-12, merit=lambda r: float
 
 
 def test_the_full_newton_step_overshoots_here():
-    evaluate, _ = atan_problem()
-    out = damped_newton(evaluate, np.array([2.0]), monotone=False, **{**SETTINGS, "max_iter": 8})
-    assert not out.converged and abs(out.x[0]) > 100.0  # every step taken: the iterates run away
+    x = 2.0
+    for _ in range(4):
+        x_next = x - np.arctan(x) * (1.0 + x * x)
+        assert abs(np.arctan(x_next)) > abs(np.arctan(x))  # each full step raises the residual
+        x = x_next
+    assert abs(x) > 1e4
 
 
 def test_only_steps_that_lower_the_residual_are_taken_and_the_root_is_found():
@@ -59,3 +62,20 @@ def test_a_singular_tangent_is_damped_not_fatal():
     out = damped_newton(evaluate, np.array([0.0]), converged=lambda r, _: abs(r[0]) <= 1e-12,
                         merit=lambda r: float(abs(r[0])), cap=0.5)
     assert out.converged and out.x[0] == pytest.approx(1.0, abs=1e-12)
+
+
+def test_a_residual_at_its_noise_floor_ends_the_solve():
+    """An inner solve leaves noise in the residual: below the caller's floor a refused step ends the solve
+    (converged), without the floor the solve runs out of damping and reports no convergence."""
+    def noisy():
+        rng = np.random.default_rng(1)
+
+        def evaluate(x):
+            return np.array([1.0 - x[0] + 1e-9 * rng.standard_normal()]), np.eye(1), None
+
+        return evaluate
+
+    kw = dict(converged=lambda r, _: abs(r[0]) <= 1e-15, merit=lambda r: float(abs(r[0])), cap=10.0)
+    assert not damped_newton(noisy(), np.array([0.0]), **kw).converged
+    out = damped_newton(noisy(), np.array([0.0]), floor=lambda r, _: abs(r[0]) <= 1e-8, **kw)
+    assert out.converged and out.x[0] == pytest.approx(1.0, abs=1e-8)

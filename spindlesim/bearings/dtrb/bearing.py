@@ -131,9 +131,12 @@ class DtrbBearing(BearingBase):
               max_iter: int = 200) -> DtrbState:
         """The state under ``load``: the ring displacement where reaction(d) + load = 0 with its results
         (the one damped Newton of ``bearings.statics`` on the 5 DOFs; a warm start ``d0`` is passed in, the
-        rollers' solution carried from one evaluation to the next).  Every step is taken (``monotone=False``):
-        with a row unloading, |R| can rise along the path Newton needs (seed 001 Fig. 8 at 10 um preload under
-        FX = FZ = 5 kN: refusing such steps stalls the solve at 1.6 kN)."""
+        rollers' solution carried from one evaluation to the next).  A step is taken when it does not raise
+        |R| in the metric of the damping, sqrt(sum R_k^2 / K_ref,k): with a row unloading the plain |R| can
+        rise along every damped step (seed 001 Fig. 8 at 10 um preload under FX = FZ = 5 kN stalls at 1.6 kN),
+        while in that metric the steady damped step is a descent direction of a symmetric stiffness.  A solve
+        whose steps no longer lower |R| within 1e-8 of the load ends there (the rollers' own Newton leaves
+        noise of about 1e-9 of it in the reaction)."""
         g = self.geometry
         L = np.asarray(load, float)
         pd = g.pitch_diameter_m
@@ -146,11 +149,12 @@ class DtrbBearing(BearingBase):
             rollers[0] = sol.u
             return reaction_from(T, g, sol) + L, stiffness_from(T, self._ops, sol), (psi, T, sol)
 
+        ref = self._reference_stiffness()
         out = damped_newton(evaluate, np.zeros(5) if d0 is None else d0,
                             converged=lambda r, _: bool(np.all(np.abs(r * w) < 1e-9 * force_scale)),
-                            merit=lambda r: float(np.linalg.norm(r * w)), cap=20e-6 * w,
-                            damping=self._reference_stiffness(), lam0=1e-3, shrink=0.1, lam_min=1e-12, grow=10.0,
-                            max_iter=max_iter, monotone=False)
+                            merit=lambda r: float(np.linalg.norm(r / np.sqrt(ref))), cap=20e-6 * w, damping=ref,
+                            lam0=1e-3, shrink=0.1, lam_min=1e-12, grow=10.0, max_iter=max_iter,
+                            floor=lambda r, _: bool(np.all(np.abs(r * w) < 1e-8 * force_scale)))
         if not out.converged:
             raise ArithmeticError(f"DTRB equilibrium did not converge in {max_iter} iterations "
                                   f"(residual {np.abs(out.R).max():.3g})")
