@@ -3,10 +3,11 @@
 Bearing: the embedded default deck (7014C-size DB pair, 18 x 12.7 mm balls, 15 deg, position
 preload 21 um).  Timings are the best of --repeat batches of --number calls, wall and process CPU.
 
-- "state, cold": ``BallBearing.state(load, speed)`` (set Newton, every ball from its built-in start,
-  ISO lives, pressures), the warm-start memory cleared before each call;
-- "state, warm": the same with the previous call's ball centres as starts (a sweep or time step);
-- "force_and_tangent": reaction and 5x5 tangent at one displacement (transient / static solver use);
+- "state, cold": ``BallBearing.solve(load, speed)`` (set Newton, every ball from its built-in start,
+  ISO lives, pressures): what every call does unless given a warm start;
+- "state, warm": the same with the previous call's ball centres as starts, passed in (a ``Work``: a sweep);
+- "force_and_tangent": reaction and 5x5 tangent at one displacement (transient / static solver use; every
+  ball from its built-in start);
 - "linearized": the contract's pitch-averaged tangent (4 cage positions, 4 equilibria).
 
 Then studies: speed effects under position and spring preload, the model options, the size of the
@@ -26,6 +27,7 @@ import time
 import numpy as np
 import yaml
 
+from spindlesim.bearings.ball.bearing import Work
 from spindlesim.bearings.ball import BallSection, default_deck_text
 from spindlesim.bearings.ball import kernel as kn
 from spindlesim.bearings.ball.section import build
@@ -49,28 +51,21 @@ def timings(repeat: int, number: int) -> None:
     print(f"{'case':44s} {'wall ms':>8s} {'cpu ms':>8s}")
     for model in ("outer_race_control", "full"):
         b = build(section(model=model))
-        b.state(LOAD, 10000 * RPM)  # compile
+        b.solve(LOAD, 10000 * RPM)  # compile
         for rpm in (0.0, 10000.0, 20000.0):
             w = rpm * RPM
 
             def cold():
-                b._X[:] = np.nan
-                return b.state(LOAD, w)
+                return b.solve(LOAD, w)
 
             wall, cpu = best(cold, repeat, number)
             flag = "ok" if cpu * 1e3 < TARGET_MS else "SLOW"
             print(f"{'state+tangent cold, ' + model + f', {rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}  {flag}")
-            wall, cpu = best(lambda: b.state(LOAD, w), repeat, number)
+            work = Work(b)  # the balls' warm starts, passed in
+            wall, cpu = best(lambda: b.solve(LOAD, w, work=work), repeat, number)
             print(f"{'state+tangent warm, ' + model + f', {rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
-        q = b.equilibrium(LOAD, 15000 * RPM)
+        q = b.solve(LOAD, 15000 * RPM).displacement
         wall, cpu = best(lambda: b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0), repeat, 5 * number)
-        print(f"{'force_and_tangent warm, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
-
-        def fat_cold():
-            b._X[:] = np.nan
-            return b.force_and_tangent(q, None, 0.0, 15000 * RPM, 0.0)
-
-        wall, cpu = best(fat_cold, repeat, 5 * number)
         print(f"{'force_and_tangent cold, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
         wall, cpu = best(lambda: b.linearized(15000 * RPM, LOAD), repeat, max(1, number // 5))
         print(f"{'linearized (4 cage positions), ' + model:44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
@@ -88,7 +83,7 @@ def speed_study() -> None:
         print(f"  {'rpm':>6s} {'a_i':>6s} {'a_o':>6s} {'Q_i':>7s} {'Q_o':>7s} {'F_c':>7s} {'M_g':>7s} "
               f"{'thrust':>7s} {'K_xx':>7s} {'K_zz':>7s} {'K_tt':>9s}")
         for rpm in (0, 2500, 5000, 7500, 10000, 15000, 20000):
-            st = b.state(np.zeros(5), rpm * RPM)
+            st = b.solve(np.zeros(5), rpm * RPM)
             print(f"  {rpm:6d} {st.contact_angle_inner_deg[0, 0]:6.2f} {st.contact_angle_outer_deg[0, 0]:6.2f} "
                   f"{st.element_load_inner_N[0, 0]:7.1f} {st.element_load_outer_N[0, 0]:7.1f} "
                   f"{st.centrifugal_force_N[0, 0]:7.1f} {st.gyroscopic_moment_Nm[0, 0]:7.4f} "
@@ -108,7 +103,7 @@ def model_study() -> None:
         b = build(section(model=label.split(",")[0]))
         if factor is not None:
             b._p[kn.COUPLE] = factor
-        st = b.state(LOAD, 20000 * RPM)
+        st = b.solve(LOAD, 20000 * RPM)
         print(f"  {label:52s} {st.row_axial_load_N[0]:8.1f} {st.row_axial_load_N[1]:8.1f} "
               f"{st.contact_angle_outer_deg.max():8.2f} {st.stiffness[0, 0] / 1e6:7.1f} {st.stiffness[2, 2] / 1e6:7.1f} "
               f"{st.life_L10r_iso16281_Mrev:9.4g}")
@@ -133,8 +128,8 @@ def iteration_study() -> None:
     buf = np.empty(kn.N_BUF)
     counts = []
     for rpm in (1000.0, 10000.0, 20000.0):
-        q = b.equilibrium(LOAD, rpm * RPM)
-        st = b.state_at(q, rpm * RPM)
+        q = b.solve(LOAD, rpm * RPM).displacement
+        st = b.at(q, rpm * RPM)
         g = b.geometry
         for k in range(g.rows):
             s = float(g.row_sign[k])

@@ -41,12 +41,12 @@ def main() -> None:
                           large_end_diameter_m=0.010, roller_length_m=0.014, large_end_offset_m=0.018,
                           crown_radius_m=2.68, n_slices=S)
         b = DtrbBearing(g, 30e-6)
-        iters = b.state(D, speed).iterations
+        iters = b.at(D, speed).iterations
         cold = best(lambda: b.reaction_and_stiffness(D, speed), args.repeat, args.number)
         _, _, u = b.reaction_and_stiffness(D, speed)
         D2 = D + np.array([1e-7, 0, 0, 0, 0])
         warm = best(lambda: b.reaction_and_stiffness(D2, speed, roller_guess=u), args.repeat, args.number)
-        eq, _ = best(lambda: b.equilibrium([5000.0, 0.0, 5000.0, 0.0, 0.0], speed), 3, 5)
+        eq, _ = best(lambda: b.solve([5000.0, 0.0, 5000.0, 0.0, 0.0], speed), 3, 5)
         flag = ""
         if (Z, S) == (20, 30):
             flag = "cold " + ("PASS" if cold[1] * 1e3 < TARGET_MS else f"over {TARGET_MS} ms")

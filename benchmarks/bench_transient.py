@@ -111,7 +111,7 @@ def process_time(args: list[str], env: dict, old: Path | None = None) -> tuple[f
 
 def rig(args) -> None:
     from spindlesim.analysis.transient.engine import simulate
-    from spindlesim.bearings.roller.section import TransientSection
+    from spindlesim.deck.transient import TransientSection
     from spindlesim.runs.transient import rig_setup
 
     T = args.duration
@@ -210,7 +210,7 @@ def main() -> None:
 
 def whole_process(args) -> None:
     """Section 3 of the module note."""
-    from spindlesim.bearings.roller.section import TransientSection
+    from spindlesim.deck.transient import TransientSection
     from spindlesim.runs.transient import rig_setup
 
     cmd = ["transient", "--rollers", "8", "--duration", "0.5", "--model", "rigid_race"]

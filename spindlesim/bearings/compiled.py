@@ -21,8 +21,8 @@ from numba.extending import overload
 
 from .linear.bearing import KIND as LINEAR
 from .roller import flexible_race_kernel, rigid_race_kernel
-from .roller.flexible_race import KIND as FLEXIBLE_RACE
-from .roller.rigid_race import KIND as RIGID_RACE
+from .roller.bearing import FLEXIBLE_RACE_KIND as FLEXIBLE_RACE
+from .roller.bearing import RIGID_RACE_KIND as RIGID_RACE
 
 
 class LinearForce(NamedTuple):

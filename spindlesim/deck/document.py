@@ -17,12 +17,12 @@ from pydantic import BaseModel, Field, create_model, model_validator
 
 from ..bearings.ball.section import BallSection
 from ..bearings.dtrb.section import DtrbSection
-from ..bearings.roller.section import TransientSection
 from ..chatter.section import ChatterSection
 from ..bearings.types import BEARING_TYPES
 from ..contact.section import ContactSection
 from ..thermal.section import SpindleThermalSection
-from ..fields import ANY_NUMBER, AnyNumber, DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
+from ..fields import AnyNumber, DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
+from .transient import RotorTransientSection, TransientSection
 
 FrequencyRange = Range  # {start, stop, count}
 #: [outer_dia_mm, inner_dia_mm, length_mm, density_kg_m3, E_GPa, G_GPa, poisson, axial_force_N]; the loader
@@ -275,94 +275,6 @@ class SweepSection(DeckModel):
     """Deck path -> its values: a list, or {start, stop, count}. A path walks the deck by key, list index
     (0-based) or the name of a named item: operating.speed_rpm, bearings.front.K_N_m.0.0, shaft.elements.3.2.
     `--set PATH=...` on the command line overrides the entry with the same path."""
-
-
-class Perturbation(DeckModel):
-    """A static force held until t = 0 and then released (free vibration from a smooth shape)."""
-
-    node: NodeNumber
-    """Node number (1-based) where the force is applied."""
-    dof: Dof = "x"
-    """Direction of the force (a rotation DOF gives a moment, in N m)."""
-    force_N: float = 100.0
-    """Static force held until t = 0 and then released: the run starts from the deflected shape, at rest."""
-
-
-class SpeedRamp(DeckModel):
-    """A linear speed ramp over the whole run (a run-up or run-down)."""
-
-    start: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
-    """Shaft speed at t = 0 (in rpm, the unit of `speed_rpm`)."""
-    stop: Annotated[float, Field(ge=0, le=ANY_NUMBER)]
-    """Shaft speed at the end of the run (rpm); the speed changes linearly in between and the bearings'
-    forces and the shaft's gyroscopic terms follow it, while what the operating point at `operating.speed_rpm`
-    sets (a fluid film's thermal-equilibrium viscosity) stays fixed."""
-
-
-class TimeLoad(DeckModel):
-    """A force in time at a node: ``harmonic`` amplitude sin(2 pi f t + phase), f given in Hz or as
-    an ``order`` of the shaft speed; a ``step`` switched on at ``time_s``; or a ``ramp`` that grows
-    linearly to its amplitude at ``time_s``."""
-
-    node: NodeNumber
-    """Node number (1-based) the load acts on."""
-    dof: Dof = "x"
-    """Direction of the load (a rotation DOF gives a moment, in N m)."""
-    kind: Literal["harmonic", "step", "ramp"] = "harmonic"
-    """harmonic: amplitude sin(2 pi f t + phase) or sin(order x shaft angle + phase); step: the full amplitude
-    from `time_s` on; ramp: grows linearly from 0 at t = 0 to the full amplitude at `time_s`, then stays."""
-    amplitude_N: float
-    """Amplitude of the force (of the moment in N m for a rotation DOF); the sign sets its direction."""
-    frequency_hz: Optional[PositiveFloat] = None
-    """Frequency of a harmonic load; give this or `order`, not both."""
-    order: Optional[Annotated[float, Field(gt=0, le=1000.0)]] = None
-    """Frequency of a harmonic load as a multiple of the shaft speed (its phase follows the shaft angle, also
-    during a speed ramp); give this or `frequency_hz`."""
-    phase_deg: float = 0.0
-    """Phase of a harmonic load at t = 0."""
-    time_s: NonNegFloat = 0.0
-    """Switch-on time of a step; time at which a ramp reaches its amplitude (0: the full amplitude from the
-    start)."""
-
-    @model_validator(mode="after")
-    def _frequency(self) -> "TimeLoad":
-        if self.kind == "harmonic" and (self.frequency_hz is None) == (self.order is None):
-            raise ValueError("a harmonic load needs exactly one of frequency_hz and order")
-        return self
-
-
-class RotorTransientSection(DeckModel):
-    """Time response of the rotor with its bearings' full nonlinear reactions (``spindlesim transient``)."""
-
-    duration_s: PositiveFloat = 0.5
-    """Simulated time (`spindlesim transient --duration` overrides it)."""
-    # newmark: implicit average acceleration + Newton (any bearing); rk4: explicit fixed step with
-    # compiled bearing forces; RK45, DOP853, Radau, BDF, LSODA: scipy's adaptive methods (a cross-check)
-    method: Literal["newmark", "rk4", "RK45", "DOP853", "Radau", "BDF", "LSODA"] = "newmark"
-    """Time integrator: newmark (implicit average acceleration with Newton iterations, any bearing); rk4
-    (explicit, fixed step, compiled bearing forces); RK45, DOP853, Radau, BDF, LSODA (scipy's adaptive methods,
-    slower: a cross-check)."""
-    time_step_s: Optional[PositiveFloat] = None  # newmark default 5e-5; rk4 default: min(1 us, stability)
-    """Largest time step; the step used is the largest one not above it that lands on every sample. None: 5e-5 s
-    for newmark; for rk4 the smaller of 1 us and its stability limit."""
-    sample_rate_hz: Optional[PositiveFloat] = None
-    """Rate of the recorded samples. None: every step for newmark; otherwise 50 samples per roller pass of the
-    first roller bearing (per revolution without one), at least 2 kHz."""
-    rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None  # scipy methods
-    """Relative tolerance of the scipy methods (ignored by newmark and rk4). None: 1e-8."""
-    record_node: Optional[NodeNumber] = None  # default: the first bearing's node
-    """Node whose response is recorded and plotted (orbit, spectrum). None: the node of the first bearing."""
-    settle_fraction: Annotated[float, Field(ge=0.0, lt=1.0)] = 0.3  # start of the steady part for the spectrum
-    """Start of the steady part used for the spectrum and the Poincare map, as a fraction of the duration."""
-    unbalance: bool = True  # apply the deck's unbalance section
-    """true: apply the deck's `unbalance` section (rotating with the shaft) when it has one."""
-    speed_rpm: Optional[SpeedRamp] = None  # a run-up / run-down; default: operating.speed_rpm constant
-    """A linear run-up or run-down over the whole run. None: constant `operating.speed_rpm`."""
-    loads: Annotated[list[TimeLoad], Field(max_length=1000)] = []
-    """Forces in time at nodes, added to the static loads (point loads and gravity)."""
-    perturbation: Optional[Perturbation] = None
-    """Start from the shape deflected by a static force that is released at t = 0. None: start from the static
-    equilibrium."""
 
 
 def bearing_types() -> dict[str, type[BaseModel]]:

@@ -32,7 +32,7 @@ def journal_rotor(bearings, mass_kg: float, damping_Ns_m: float = 0.0, load_N=(0
 
 
 def rig_rotor(sec: Any, rollers: int | None = None, model: str | None = None) -> Rotor:
-    """Rotor of the rig section ``sec`` (``TransientSection``); CLI options override rollers and model."""
+    """Rotor of the rig section ``sec`` (``deck.transient.TransientSection``); CLI options override rollers and model."""
     bearing = BEARING_TYPES["roller"].build(rig_bearing_entry(sec, rollers, model))
     return journal_rotor((bearing,), sec.shaft.mass_kg, sec.shaft.damping_Ns_mm * 1e3,
                          (0.0, -sec.shaft.radial_load_N), sec.speed_rpm)

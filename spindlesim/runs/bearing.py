@@ -31,7 +31,7 @@ def _at_temperature(b, speed: float, temperatures):
         inner_fit = b.speed_growth.fit(speed)
     preload = None
     if b.preload.kind != "spring":  # a spring sets the preload force whatever the growth
-        preload = np.asarray(b.state(np.zeros(5), speed).row_axial_load_N, float)
+        preload = np.asarray(b.solve(np.zeros(5), speed).row_axial_load_N, float)
     temps = {} if temperatures is None else {k: float(v) for k, v in temperatures.model_dump().items() if v is not None}
     return AtTemperature(gr, 0.0 if b.speed_growth is None else float(b.speed_growth(speed)),
                          b.preload.row_offsets(b.geometry.rows), preload, inner_fit, gr.rings.outer_fit, temps)

@@ -59,7 +59,7 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
         if progress is not None:
             progress(done, total)
 
-    st = bearing.equilibrium(load, speed)
+    st = bearing.solve(load, speed)
     tick()
     log.info("DTRB equilibrium: d = %s, loaded rollers %s", st.displacement, st.loaded_rollers())
     sweeps: dict[str, DtrbSweep] = {}
@@ -72,11 +72,11 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
         tick(n_rad)
     polar = [("applied load", st)]
     for p in sec.polar_preloads_um:
-        polar.append((f"delta0 = {p:g} um", bearing.with_preload(1e-6 * p + shift).equilibrium(load, speed)))
+        polar.append((f"delta0 = {p:g} um", bearing.with_preload(1e-6 * p + shift).solve(load, speed)))
     for fx in sec.polar_radial_loads_N:
         L = load.copy()
         L[0] = fx
-        polar.append((f"FX = {fx / 1e3:g} kN", bearing.equilibrium(L, speed)))
+        polar.append((f"FX = {fx / 1e3:g} kN", bearing.solve(L, speed)))
     paths = [write_dtrb(outdir / "dtrb.h5", run, g, preload, speed, load, st, sweeps, polar)]
     figures = [draw(outdir / "dtrb_load_distribution.png", plot_load_distribution, polar)]
     if "preload_sweep" in sweeps:

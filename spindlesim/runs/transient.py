@@ -66,7 +66,7 @@ def rotor_setup(deck: Any, opts: dict):
     """(rotor, settings) of a rotor deck and its ``rotor_transient:`` section."""
     from ..analysis.transient.engine import Perturbation, TransientSettings
     from ..analysis.transient.system import Excitation, TimeLoad, Unbalance
-    from ..deck.document import RotorTransientSection
+    from ..deck.transient import RotorTransientSection
     from ..model.build import build_rotor
 
     cfg = deck.rotor_transient or RotorTransientSection()

@@ -115,7 +115,7 @@ def test_frequencies_are_the_kinematic_ones():
 def test_set_and_ball_balances(changes, rpm):
     b = bearing(**changes)
     load = np.array([2500.0, -1200.0, 900.0, 35.0, -20.0])
-    st = b.state(load, rpm * RPM, cage_angle=0.1)
+    st = b.solve(load, rpm * RPM, cage_angle=0.1)
     assert np.max(np.abs(st.reaction + load)) <= 1e-9 * np.max(np.abs(load))
     # every ball: Q_i n_i - Q_o n_o + F_c e_r + friction couple = 0 in (axial, radial)
     D = b.geometry.ball_diameter_m
@@ -135,7 +135,7 @@ def test_reaction_at_rest_is_the_sum_of_the_inner_contact_forces():
     inner groove-centre locus (radius R_i, row position z_k + s (r_i - D/2) sin a_f)."""
     b = bearing()
     q = np.array([6e-6, -2e-6, 3e-6, 2e-5, 1e-5])
-    st = b.state_at(q, 0.0, 0.2)
+    st = b.at(q, 0.0, 0.2)
     g = b.geometry
     f = np.zeros(5)
     Ri = g.inner_centre_radius_m
@@ -156,7 +156,7 @@ def test_linearized_is_the_tangent_at_the_loaded_equilibrium():
     load = np.array([1500.0, 0.0, 400.0, 0.0, 10.0])
     one = BallBearing(b.geometry, b.preload, pitch_samples=1)
     K1, C1 = one.linearized(9000.0 * RPM, load)
-    q = one.equilibrium(load, 9000.0 * RPM)
+    q = one.solve(load, 9000.0 * RPM).displacement
     f, K, _ = one.force_and_tangent(q, np.zeros(5), 0.0, 9000.0 * RPM, 0.0)
     assert np.allclose(f, -load, rtol=0, atol=1e-9 * 1500.0)
     assert np.allclose(K1, K, rtol=1e-10, atol=1e-12 * np.abs(K).max()) and np.all(C1 == 0)
@@ -176,8 +176,8 @@ def test_results_do_not_depend_on_the_warm_start():
 
 def test_back_to_back_pair_mirrors_under_reversed_thrust():
     b = bearing()
-    a = b.state(np.array([800.0, 0.0, 1500.0, 0.0, 0.0]), 6000.0 * RPM)
-    m = b.state(np.array([800.0, 0.0, -1500.0, 0.0, 0.0]), 6000.0 * RPM)
+    a = b.solve(np.array([800.0, 0.0, 1500.0, 0.0, 0.0]), 6000.0 * RPM)
+    m = b.solve(np.array([800.0, 0.0, -1500.0, 0.0, 0.0]), 6000.0 * RPM)
     assert m.row_axial_load_N == pytest.approx(a.row_axial_load_N[::-1], rel=1e-9)
     assert m.displacement[2] == pytest.approx(-a.displacement[2], rel=1e-9)
     assert a.row_axial_load_N[0] - a.row_axial_load_N[1] == pytest.approx(1500.0, rel=1e-9)
@@ -186,7 +186,7 @@ def test_back_to_back_pair_mirrors_under_reversed_thrust():
 def test_rest_is_the_limit_of_low_speed():
     b = bearing()
     load = np.array([1000.0, 0.0, 300.0, 0.0, 0.0])
-    rest, slow = b.state(load, 0.0), b.state(load, 1e-3)
+    rest, slow = b.solve(load, 0.0), b.solve(load, 1e-3)
     assert np.allclose(slow.element_load_inner_N, rest.element_load_inner_N, rtol=1e-6, atol=1e-6)
     assert np.allclose(slow.stiffness, rest.stiffness, rtol=1e-6, atol=1e-6 * rest.stiffness.max())
 
@@ -195,7 +195,7 @@ def test_spring_preloaded_rows_keep_their_force_and_add_no_axial_stiffness():
     # the rows carrying -z thrust float: row 1 of the DB pair (at its +z end)
     b = bearing(preload={"kind": "spring", "axial_N": 400.0, "floating": "-z"})
     for rpm in (0.0, 15000.0):
-        st = b.state(np.array([1200.0, 0.0, 500.0, 0.0, 0.0]), rpm * RPM)
+        st = b.solve(np.array([1200.0, 0.0, 500.0, 0.0, 0.0]), rpm * RPM)
         assert st.row_axial_load_N[1] == pytest.approx(400.0, rel=1e-10)  # floating row (the last)
         assert st.row_axial_load_N[0] == pytest.approx(900.0, rel=1e-9)
         # the axial stiffness is that of the fixed row alone (row 1 evaluated at the same state)
@@ -205,11 +205,11 @@ def test_spring_preloaded_rows_keep_their_force_and_add_no_axial_stiffness():
 
 def test_fully_floating_set_carries_exactly_its_spring_force():
     b = build(entry(preload={"kind": "spring", "axial_N": 300.0}))
-    st = b.state(np.array([500.0, 0.0, 300.0, 0.0, 0.0]), 5000.0 * RPM)
+    st = b.solve(np.array([500.0, 0.0, 300.0, 0.0, 0.0]), 5000.0 * RPM)
     assert st.row_axial_load_N[0] == pytest.approx(300.0, rel=1e-10)
     assert np.all(st.stiffness[2, :] == 0.0) and np.all(st.stiffness[:, 2] == 0.0)
     with pytest.raises(ValueError, match="exactly the spring force"):
-        b.state(np.array([500.0, 0.0, 100.0, 0.0, 0.0]), 0.0)
+        b.solve(np.array([500.0, 0.0, 100.0, 0.0, 0.0]), 0.0)
 
 
 def test_failed_set_equilibrium_says_what_and_where():
@@ -221,11 +221,11 @@ def test_failed_set_equilibrium_says_what_and_where():
 def test_traction_needed_by_the_gyroscopic_couple_is_reported(caplog):
     """Outer-race control at moderate speed needs little traction; the full model with a light spring
     preload at 20000 rpm needs more friction at the inner contact than it could have: warned."""
-    st = bearing().state(np.zeros(5), 10000.0 * RPM)
+    st = bearing().solve(np.zeros(5), 10000.0 * RPM)
     D = 12.7e-3
     assert st.traction_ratio == pytest.approx(2 * st.gyroscopic_moment_Nm / D / st.element_load_outer_N, rel=1e-12)
     assert st.traction_ratio.max() < 0.05
     with caplog.at_level("WARNING", logger="spindlesim.bearings.ball.bearing"):
-        st = bearing(model="full", preload={"kind": "spring", "axial_N": 250.0}).state(np.zeros(5), 20000.0 * RPM)
+        st = bearing(model="full", preload={"kind": "spring", "axial_N": 250.0}).solve(np.zeros(5), 20000.0 * RPM)
     assert st.traction_ratio.max() > 0.1
     assert "gyroscopic slip" in caplog.text

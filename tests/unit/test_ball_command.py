@@ -34,7 +34,7 @@ def test_gyroscopic_moment_is_the_turning_of_the_ball_axis(model):
     pair, for each race control; the controlling race has no spin."""
     b = bearing(model=model)
     w = 15000.0 * RPM
-    st = b.state(np.array([1500.0, -500.0, 400.0, 10.0, 0.0]), w)
+    st = b.solve(np.array([1500.0, -500.0, 400.0, 10.0, 0.0]), w)
     g = b.geometry
     m = ball_motion(np.radians(st.contact_angle_inner_deg), np.radians(st.contact_angle_outer_deg), w,
                     g.pitch_diameter_m, g.ball_diameter_m, model)
@@ -79,7 +79,7 @@ def test_a_displacement_past_the_grooves_is_a_reported_error():
 
     b = bearing(**{k: v for k, v in SINGLE.items() if k != "load"})
     with pytest.raises(BallEquilibriumError, match="past the outer one at a ball"):
-        b.state_at(np.array([1e-3, 0.0, 0.0, 0.0, 0.0]), 4000.0 * RPM)
+        b.at(np.array([1e-3, 0.0, 0.0, 0.0, 0.0]), 4000.0 * RPM)
 
 
 def run_cli(tmp_path, name, **changes):

@@ -119,7 +119,7 @@ def test_deep_groove_free_contact_angle_from_clearance():
 
 def test_state_arrays_have_documented_shapes():
     b = bearing()
-    st = b.state(np.array([500.0, 0.0, 100.0, 0.0, 0.0]), 3000.0 * RPM)
+    st = b.solve(np.array([500.0, 0.0, 100.0, 0.0, 0.0]), 3000.0 * RPM)
     assert st.displacement.shape == (5,) and st.stiffness.shape == (5, 5)
     for name in ("element_load_inner_N", "element_load_outer_N", "contact_angle_inner_deg", "contact_angle_outer_deg",
                  "max_pressure_inner_Pa", "max_pressure_outer_Pa", "psi_rad", "centrifugal_force_N"):

@@ -55,7 +55,7 @@ def test_sweep_functions_directly():
     assert sw.values.tolist() == pytest.approx([0.0, 10000.0])
     fig = plots.plot_contact_angles_vs_speed(sw)
     assert "spring preload 200 N" in fig._suptitle.get_text()
-    fig = plots.plot_load_distribution(b.state(np.array([800.0, 0.0, 0.0, 0.0, 0.0]), 3000 * RPM))
+    fig = plots.plot_load_distribution(b.solve(np.array([800.0, 0.0, 0.0, 0.0, 0.0]), 3000 * RPM))
     assert "Fx 800 N, 3000 rpm" in fig._suptitle.get_text()
 
 

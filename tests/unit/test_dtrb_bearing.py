@@ -41,7 +41,7 @@ def test_partially_unloaded_rows_jacobian():
     # no preload, ring pushed one way: row 2 has unloaded rollers, regularisation must not leak in
     b = bearing(preload_um=0.0)
     d = np.array([8e-6, 0.0, 2.0e-5, 0.0, 1e-4])
-    st = b.state(d)
+    st = b.at(d)
     n = st.loaded_rollers()
     assert n[0] > 0 and n.sum() < 40  # some rollers carry nothing
     K = st.stiffness
@@ -56,7 +56,7 @@ def test_equilibrium_balances_the_applied_load_through_the_cup():
     FY = sum Q_o cos(alpha) sin(psi), FZ = sum s_k Q_o sin(alpha)."""
     b = bearing(preload_um=20.0)
     load = np.array([6000.0, -2500.0, 4000.0, 30.0, -50.0])
-    st = b.equilibrium(load)
+    st = b.solve(load)
     assert st.converged
     assert np.allclose(st.reaction, -load, rtol=0, atol=1e-6 * np.abs(load).max())
     a = b.geometry.cup_angle_rad
@@ -81,8 +81,8 @@ def test_rows_swap_under_mirrored_load():
     b = bearing(preload_um=5.0, n_slices=12)
     load = np.array([5000.0, 0.0, 5000.0, 0.0, 40.0])
     mirror = load * np.array([1, 1, -1, 1, -1])  # Z -> -Z: FZ and MY change sign
-    a = b.equilibrium(load)
-    m = b.equilibrium(mirror)
+    a = b.solve(load)
+    m = b.solve(mirror)
     assert np.allclose(a.outer_load_N[0], m.outer_load_N[1], rtol=1e-7, atol=1e-6)
     assert np.allclose(a.outer_load_N[1], m.outer_load_N[0], rtol=1e-7, atol=1e-6)
     assert np.allclose(a.displacement * np.array([1, 1, -1, 1, -1]), m.displacement, rtol=1e-7, atol=1e-13)
@@ -91,7 +91,7 @@ def test_rows_swap_under_mirrored_load():
 
 def test_preloaded_bearing_at_rest_is_symmetric():
     b = bearing(preload_um=15.0)
-    st = b.state(np.zeros(5))
+    st = b.at(np.zeros(5))
     assert np.abs(st.reaction[:3]).max() < 1e-6 and np.abs(st.reaction[3:]).max() < 1e-8
     assert np.allclose(st.outer_load_N, st.outer_load_N[0, 0], rtol=1e-10)
     K = st.stiffness
@@ -132,7 +132,7 @@ def test_roller_newton_converges_and_warm_start_agrees():
     b = bearing(preload_um=10.0)
     w = 3000 * RPM
     F, K, u = b.reaction_and_stiffness(D_GENERAL, w)
-    st = b.state(D_GENERAL, w)
+    st = b.at(D_GENERAL, w)
     assert st.converged and st.iterations < 30
     F2, K2, _ = b.reaction_and_stiffness(D_GENERAL, w, roller_guess=u)
     assert np.allclose(F2, F, rtol=1e-10, atol=1e-8)
@@ -143,7 +143,7 @@ def test_bearing_protocol_linearized():
     b = DtrbBearing(geometry(n_slices=10), 20e-6, name="hub", node=3, axial_load_N=2000.0)
     assert isinstance(b, Bearing)
     K, C = b.linearized(3000 * RPM, np.array([3000.0, -1000.0]))
-    K5 = b.equilibrium([3000.0, -1000.0, 2000.0, 0, 0], 3000 * RPM).stiffness
+    K5 = b.solve([3000.0, -1000.0, 2000.0, 0, 0], 3000 * RPM).stiffness
     assert np.allclose(K, K5[:2, :2]) and np.all(C == 0.0)
     assert K[0, 0] > 0 and K[1, 1] > 0
     f = b.force_and_tangent(np.array([1e-6, 0.0]), np.zeros(2))[0]
@@ -157,6 +157,6 @@ def test_bearing_protocol_linearized():
 def test_equilibrium_without_preload_from_rest():
     # no preload: K = 0 at d = 0; the damped Newton must still find the loaded state
     b = bearing(preload_um=0.0, n_slices=10)
-    st = b.equilibrium([3000.0, 0.0, 2000.0, 0.0, 0.0])
+    st = b.solve([3000.0, 0.0, 2000.0, 0.0, 0.0])
     assert st.converged
     assert np.allclose(st.reaction, [-3000.0, 0.0, -2000.0, 0.0, 0.0], atol=1e-5)

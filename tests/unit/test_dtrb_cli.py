@@ -117,7 +117,7 @@ bearings:
     assert b.dof_names == ("x", "y", "z", "theta_x", "theta_y") and "z" in rotor.dofs.names
     K, C = b.linearized(w, np.array([2000.0, 0.0]))
     assert K.shape == (5, 5) and C.shape == (5, 5) and K[0, 0] > 1e8 and K[2, 2] > 1e7
-    assert np.allclose(K, b.equilibrium([2000.0, 0.0, 1000.0, 0.0, 0.0], w).stiffness)
+    assert np.allclose(K, b.solve([2000.0, 0.0, 1000.0, 0.0, 0.0], w).stiffness)
     f, Kt, Ct = b.force_and_tangent(np.array([1e-6, 0.0, 2e-6, 0.0, 1e-5]), np.zeros(5), 0.0, w)
     assert f.shape == (5,) and np.allclose(Kt, b.stiffness([1e-6, 0.0, 2e-6, 0.0, 1e-5], w))
     two = build_rotor(parse_deck(text.replace("axial_load_N: 1000", "axial_load_N: 1000\n    dofs: 2"),

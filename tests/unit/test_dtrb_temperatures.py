@@ -47,7 +47,7 @@ def test_warm_cones_raise_the_preload_and_the_stiffness(section):
     assert cold.preload_m == pytest.approx(b.preload_m - ref, rel=1e-9)
     k = {}
     for name, brg in (("base", b), ("warm", warm), ("cold", cold)):
-        st = brg.equilibrium(LOAD, 0.0)
+        st = brg.solve(LOAD, 0.0)
         K = brg.stiffness(st.displacement)
         k[name] = (K[0, 0], K[2, 2])
     assert k["warm"][0] > k["base"][0] > k["cold"][0] and k["warm"][1] > k["base"][1] > k["cold"][1]

@@ -10,7 +10,8 @@ from spindlesim.analysis.operating import operating_state
 from spindlesim.analysis.transient.engine import TransientSettings, integrate, prepare, stability_step
 from spindlesim.bearings.base import Bearing
 from spindlesim.bearings.roller.contact_force import CompliantContact
-from spindlesim.bearings.roller.flexible_race import FlexibleRaceBearing, HousingSupport
+from spindlesim.bearings.roller.bearing import FlexibleRaceBearing
+from spindlesim.bearings.roller.flexible_race import HousingSupport
 from spindlesim.bearings.roller.kinematics import CageKinematics
 from spindlesim.bearings.roller.outer_race import SegmentedRing
 from spindlesim.contact.hertz import palmgren_stiffness
@@ -163,7 +164,7 @@ def test_compiled_force_keeps_its_digits_for_tiny_race_displacements():
 def test_rig_steps_the_flexible_race_at_its_stability_limit_and_the_rigid_race_at_1_us():
     # the flexible race's step is bound by its ~200 kHz segment modes (about 1.4 us), not by the accuracy
     # of the kHz response: seed 000's rig steps there; the rigid race keeps 1 us (issue 4)
-    from spindlesim.bearings.roller.section import TransientSection
+    from spindlesim.deck.transient import TransientSection
     from spindlesim.runs.transient import rig_setup
 
     rotor_f, s = rig_setup(TransientSection(model="flexible_race"), {"duration_s": 0.01})

@@ -10,7 +10,7 @@ from spindlesim.analysis.transient import ivp
 from spindlesim.analysis.transient.engine import TransientSettings, integrate, prepare
 from spindlesim.analysis.transient.fixed_step import stability_step_s
 from spindlesim.bearings.roller.kinematics import CageKinematics
-from spindlesim.bearings.roller.rigid_race import RigidRaceBearing, Waviness
+from spindlesim.bearings.roller.bearing import RigidRaceBearing, Waviness
 from spindlesim.contact.hertz import EXPONENT_POINT
 from spindlesim.model.rig import journal_rotor
 

@@ -8,7 +8,7 @@ from spindlesim.analysis.transient.system import Excitation, TimeLoad
 from spindlesim.bearings.base import Bearing
 from spindlesim.bearings.roller.kinematics import CageKinematics
 from spindlesim.bearings.roller.load_distribution import static_load_distribution
-from spindlesim.bearings.roller.rigid_race import RigidRaceBearing, Waviness
+from spindlesim.bearings.roller.bearing import RigidRaceBearing, Waviness
 from spindlesim.contact.hertz import palmgren_stiffness
 from spindlesim.model.rig import journal_rotor
 

@@ -48,12 +48,12 @@ def test_entry_at_temperature_builds_the_grown_bearing():
     assert b.geometry.clearance_m == pytest.approx(gr.clearance_m, rel=1e-14)
     assert b.preload.row_offsets(2).tolist() == pytest.approx((cold.preload.row_offsets(2)
                                                                + gr.row_offset_change_m).tolist(), rel=1e-14)
-    assert b.state(np.zeros(5), 0.0).row_axial_load_N[0] > 4.0 * cold.state(np.zeros(5), 0.0).row_axial_load_N[0]
+    assert b.solve(np.zeros(5), 0.0).row_axial_load_N[0] > 4.0 * cold.solve(np.zeros(5), 0.0).row_axial_load_N[0]
     # with a mounting the inner ring also grows with speed: more preload than without it at 15,000 rpm
     m = build(entry(temperatures_C=HOT, mounting=MOUNT, **pair))
     w = 15000 * RPM
     assert m.speed_growth is not None and m.speed_growth(w) > 1e-6 and b.speed_growth is None
-    assert m.state(np.zeros(5), w).row_axial_load_N[0] > b.state(np.zeros(5), w).row_axial_load_N[0]
+    assert m.solve(np.zeros(5), w).row_axial_load_N[0] > b.solve(np.zeros(5), w).row_axial_load_N[0]
 
 
 @pytest.mark.parametrize("changes, where, message", [
@@ -90,7 +90,7 @@ def test_bearing_command_reports_the_operating_clearance_and_preload(tmp_path):
         assert float(g["operating_clearance_m"][()]) == pytest.approx(b.growth.clearance_m - 2 * b.speed_growth(w),
                                                                       rel=1e-12)
         assert g["preload_offset_m"][()].tolist() == pytest.approx(b.preload.row_offsets(2).tolist(), rel=1e-12)
-        assert g["preload_N"][()].tolist() == pytest.approx(b.state(np.zeros(5), w).row_axial_load_N.tolist(),
+        assert g["preload_N"][()].tolist() == pytest.approx(b.solve(np.zeros(5), w).row_axial_load_N.tolist(),
                                                             rel=1e-8)
         assert g.attrs["temperature_inner_ring_C"] == 40.0 and int(g.attrs["inner_fit_lost"]) == 1
         assert float(g["outer_fit_interference_m"][()]) == pytest.approx(-2e-6 + 110e-3 * 10.0 * (11.5e-6 - 10.5e-6))

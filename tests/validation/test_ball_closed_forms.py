@@ -58,7 +58,7 @@ def test_pure_axial_load_jones(case, Fa):
     Kn = series_constant(D, dm, fi, fo, a0)
     a = brentq(lambda x: math.sin(x) * (math.cos(a0) / math.cos(x) - 1.0) ** 1.5 * BD ** 1.5 - Fa / (Z * Kn),
                a0 + 1e-12, math.radians(89.0), xtol=1e-15, rtol=1e-15)
-    st = b.state(np.array([0.0, 0.0, Fa, 0.0, 0.0]))
+    st = b.solve(np.array([0.0, 0.0, Fa, 0.0, 0.0]))
     assert np.allclose(np.radians(st.contact_angle_inner_deg), a, rtol=0, atol=1e-10)
     assert np.allclose(st.element_load_inner_N, Fa / (Z * math.sin(a)), rtol=1e-9)
     assert st.displacement[2] == pytest.approx(BD * math.sin(a - a0) / math.cos(a), rel=1e-8)
@@ -70,7 +70,7 @@ def test_stribeck_discrete_sum_and_limit():
     b = build(entry(balls=12, ball_diameter_mm=12.7, pitch_diameter_mm=65.0, contact_angle_deg=0.0,
                     inner_conformity=0.52, outer_conformity=0.52))
     Fr = 5000.0
-    st = b.state(np.array([Fr, 0.0, 0.0, 0.0, 0.0]))
+    st = b.solve(np.array([Fr, 0.0, 0.0, 0.0, 0.0]))
     psi = 2 * math.pi * np.arange(12) / 12
     c = np.clip(np.cos(psi), 0.0, None)
     Q_ref = Fr / np.sum(c ** 2.5)
@@ -81,7 +81,7 @@ def test_stribeck_discrete_sum_and_limit():
     assert 1.0 / Jr == pytest.approx(4.37, abs=1e-3)
     many = build(entry(balls=400, ball_diameter_mm=1.0, pitch_diameter_mm=200.0, contact_angle_deg=0.0,
                        inner_conformity=0.52, outer_conformity=0.52))
-    st = many.state(np.array([Fr, 0.0, 0.0, 0.0, 0.0]))
+    st = many.solve(np.array([Fr, 0.0, 0.0, 0.0, 0.0]))
     assert st.element_load_inner_N.max() * 400 / Fr == pytest.approx(1.0 / Jr, rel=1e-3)
 
 
@@ -99,7 +99,7 @@ def test_hertz_exact_against_hamrock_brewe_and_the_state(case):
     # the state's semi-axes and peak pressure: the same Hertz solution at each ball load (Q^(1/3) scaling)
     b = build(entry(balls=Z, ball_diameter_mm=D_mm, pitch_diameter_mm=dm_mm, inner_conformity=fi,
                     outer_conformity=fo, contact_angle_deg=a0_deg))
-    st = b.state(np.array([3000.0, 0.0, 4000.0, 0.0, 0.0]))
+    st = b.solve(np.array([3000.0, 0.0, 4000.0, 0.0, 0.0]))
     j = int(np.argmax(st.element_load_inner_N[0]))
     Qi, Qo = st.element_load_inner_N[0, j], st.element_load_outer_N[0, j]
     ai, bi, _, pi_ = point_contact(Qi, *curvature_sums(D, dm, fi, a0, True), E_STAR_STEEL)
@@ -122,7 +122,7 @@ def test_hertz_circular_limit_is_exact():
 @pytest.mark.parametrize("axial_um", [10.0, 30.0])
 def test_preloaded_pair_stiffness_at_rest(axial_um):
     b = bearing(preload={"kind": "position", "axial_um": axial_um})
-    st = b.state(np.zeros(5))
+    st = b.solve(np.zeros(5))
     D, dm, a0 = 12.7e-3, 90e-3, math.radians(15.0)
     BD = 0.05 * D
     A = np.array([BD * math.sin(a0) + 0.5 * axial_um * 1e-6, BD * math.cos(a0)])  # (axial, radial)
@@ -152,6 +152,6 @@ def test_deep_groove_with_clearance_under_thrust(Fa):
     Kn = series_constant(D, dm, 0.52, 0.52, af)
     a = brentq(lambda x: math.sin(x) * (math.cos(af) / math.cos(x) - 1.0) ** 1.5 * BD ** 1.5 - Fa / (18 * Kn),
                af + 1e-14, math.radians(89.0), xtol=1e-15, rtol=1e-15)
-    st = b.state(np.array([0.0, 0.0, Fa, 0.0, 0.0]))
+    st = b.solve(np.array([0.0, 0.0, Fa, 0.0, 0.0]))
     assert np.allclose(np.radians(st.contact_angle_inner_deg), a, rtol=0, atol=1e-9)
     assert np.allclose(st.element_load_inner_N, Fa / (18 * math.sin(a)), rtol=1e-8)

@@ -73,7 +73,7 @@ def brute_force(load, tilt_held: bool):
 
 def test_tilt_held_against_brute_force():
     q_ref, hold_ref = brute_force(LOAD, tilt_held=True)
-    st = single_row().state(LOAD, 0.0, held=Held.of(theta_x=0.0, theta_y=0.0))
+    st = single_row().solve(LOAD, 0.0, held=Held.of(theta_x=0.0, theta_y=0.0))
     assert st.held == (False, False, False, True, True)
     assert st.displacement[:3] == pytest.approx(q_ref[:3], rel=1e-7, abs=1e-13)
     assert np.all(st.displacement[3:] == 0.0)
@@ -87,7 +87,7 @@ def test_tilt_held_against_brute_force():
 
 def test_tilt_free_against_brute_force():
     q_ref, hold_ref = brute_force(LOAD, tilt_held=False)
-    st = single_row().state(LOAD, 0.0)
+    st = single_row().solve(LOAD, 0.0)
     assert st.displacement == pytest.approx(q_ref, rel=1e-7, abs=1e-13)
     assert st.displacement[0] * 1e6 == pytest.approx(33.52, abs=0.01)   # issue 23: 33.5 um
     assert st.displacement[4] * 1e3 == pytest.approx(2.245, abs=0.001)  # 2.2 mrad
@@ -100,21 +100,21 @@ def test_held_displacement_carries_the_holding_load():
     there (state_at the same q), and holding every DOF needs no iteration."""
     b = single_row()
     load = np.array([2000.0, 0.0, 0.0, 0.0, 0.0])
-    st = b.state(load, 5000.0 * RPM, held=Held.of(z=20e-6, theta_x=0.0, theta_y=0.0))
+    st = b.solve(load, 5000.0 * RPM, held=Held.of(z=20e-6, theta_x=0.0, theta_y=0.0))
     assert st.displacement[2] == 20e-6
-    at = b.state_at(st.displacement, 5000.0 * RPM)
+    at = b.at(st.displacement, 5000.0 * RPM)
     assert st.holding_load[2] == pytest.approx(-at.reaction[2], rel=1e-12)
     assert st.holding_load[3:] == pytest.approx(-at.reaction[3:], rel=1e-12)
     assert at.reaction[:2] == pytest.approx(-load[:2], rel=1e-9, abs=1e-6)
     q = np.array([5e-6, -2e-6, 15e-6, 1e-4, -2e-4])
-    allheld = b.state(np.zeros(5), 0.0, held=Held.of(**dict(zip(("x", "y", "z", "theta_x", "theta_y"), q))))
+    allheld = b.solve(np.zeros(5), 0.0, held=Held.of(**dict(zip(("x", "y", "z", "theta_x", "theta_y"), q))))
     assert allheld.iterations == 0 and allheld.displacement == pytest.approx(q, rel=1e-15)
-    assert allheld.holding_load == pytest.approx(-b.state_at(q).reaction, rel=1e-12)
+    assert allheld.holding_load == pytest.approx(-b.at(q).reaction, rel=1e-12)
 
 
 def test_a_load_on_a_held_dof_is_refused():
     with pytest.raises(ValueError, match="theta_y is held"):
-        single_row().state(np.array([2000.0, 0.0, 1000.0, 0.0, 5.0]), held=Held.of(theta_x=0.0, theta_y=0.0))
+        single_row().solve(np.array([2000.0, 0.0, 1000.0, 0.0, 5.0]), held=Held.of(theta_x=0.0, theta_y=0.0))
     spring = single_row(preload={"kind": "spring", "axial_N": 200.0})
     with pytest.raises(ValueError, match="z cannot be held"):
-        spring.state(np.array([0.0, 0.0, 200.0, 0.0, 0.0]), held=Held.of(z=0.0))
+        spring.solve(np.array([0.0, 0.0, 200.0, 0.0, 0.0]), held=Held.of(z=0.0))

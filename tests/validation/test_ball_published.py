@@ -123,7 +123,7 @@ def harris_218(rpm: float, magnitude_only: bool = False, start=None):
 
 
 def model_218(b: BallBearing, rpm: float):
-    st = b.state(np.array([0.0, 0.0, FA218, 0.0, 0.0]), rpm * RPM)
+    st = b.solve(np.array([0.0, 0.0, FA218, 0.0, 0.0]), rpm * RPM)
     return (math.radians(st.contact_angle_inner_deg[0, 0]), math.radians(st.contact_angle_outer_deg[0, 0]),
             st.element_load_inner_N[0, 0], st.element_load_outer_N[0, 0], st.centrifugal_force_N[0, 0],
             st.gyroscopic_moment_Nm[0, 0])
@@ -180,8 +180,8 @@ def test_position_preload_rises_with_speed_and_much_less_with_ceramic_balls():
     balls in the raceways); ceramic balls much less.  Model: 254 N at rest, 1835 N at 20,000 rpm
     (d_m n = 1.8e6 mm/min) with steel balls; Si3N4 balls (3200 kg/m3) gain about half as much."""
     steel, si3n4 = pair(), pair(ball=Material(310e9, 0.26, 3200.0))
-    ts = np.array([steel.state(np.zeros(5), n * RPM).row_axial_load_N[0] for n in SPEEDS])
-    tc = np.array([si3n4.state(np.zeros(5), n * RPM).row_axial_load_N[0] for n in SPEEDS])
+    ts = np.array([steel.solve(np.zeros(5), n * RPM).row_axial_load_N[0] for n in SPEEDS])
+    tc = np.array([si3n4.solve(np.zeros(5), n * RPM).row_axial_load_N[0] for n in SPEEDS])
     assert np.all(np.diff(ts) > 0) and np.all(np.diff(tc) > 0)
     assert ts[0] == pytest.approx(254.2, abs=0.1) and ts[-1] == pytest.approx(1835.2, abs=0.5)
     assert ts[-1] > 5.0 * ts[0]  # "marked increase at very high rotational speeds"
@@ -199,7 +199,7 @@ def test_friction_force_turns_the_angular_momentum_with_the_cage():
     D, rc = g.ball_diameter_m, 0.5 * g.pitch_diameter_m
     J = g.ball_inertia_kg_m2
     w = 18000.0 * RPM
-    st = b.state(np.array([1000.0, 0.0, 500.0, 0.0, 0.0]), w)
+    st = b.solve(np.array([1000.0, 0.0, 500.0, 0.0, 0.0]), w)
     ez = np.array([0.0, 0.0, 1.0])
     checked = 0
     for k in range(g.rows):
@@ -242,13 +242,13 @@ def test_axial_stiffness_of_the_position_preloaded_pair_falls_then_rises():
     preload: at high speed K_zz per ball is of the order of the 'pendulum' stiffness F_c / ((f_o - 1/2) D)
     of a ball pressed into the outer groove by its centrifugal force."""
     speeds = np.array([0.0, 2500.0, 5000.0, 7500.0, 10000.0, 15000.0, 20000.0])
-    kpos = np.array([pair().state(np.zeros(5), n * RPM).stiffness[2, 2] for n in speeds]) / 1e6
+    kpos = np.array([pair().solve(np.zeros(5), n * RPM).stiffness[2, 2] for n in speeds]) / 1e6
     assert kpos[0] == pytest.approx(77.39, abs=0.01) and kpos[-1] == pytest.approx(96.87, abs=0.01)
     i = int(np.argmin(kpos))
     assert speeds[i] == 7500.0 and kpos[i] == pytest.approx(56.31, abs=0.01)
     assert np.all(np.diff(kpos[: i + 1]) < 0) and np.all(np.diff(kpos[i:]) > 0)
     spring = pair(preload=Preload("spring", axial_N=254.2))
-    st = spring.state(np.zeros(5), 30000.0 * RPM)
+    st = spring.solve(np.zeros(5), 30000.0 * RPM)
     g = spring.geometry
     pendulum = g.balls * st.centrifugal_force_N[0, 0] / ((g.outer_conformity - 0.5) * g.ball_diameter_m)
     assert 0.8 < st.stiffness[2, 2] / pendulum < 1.5  # one fixed row; the floating row adds no axial stiffness

@@ -35,7 +35,7 @@ A1_21UM = BD * math.sin(A0) + 0.5 * 21e-6  # position preload 21 um, no external
 @pytest.mark.parametrize("rpm", [10000.0, 20000.0])
 def test_inner_race_control_against_hand_calculation(rpm):
     (ai, ao, Qi, Qo, Fc, Mg, _), _ = hand_ball(rpm * RPM, "inner", A1=A1_21UM)
-    st = bearing(model="inner_race_control").state(np.zeros(5), rpm * RPM)
+    st = bearing(model="inner_race_control").solve(np.zeros(5), rpm * RPM)
     assert st.model == "inner_race_control"
     assert math.radians(st.contact_angle_inner_deg[0, 0]) == pytest.approx(ai, rel=1e-8)
     assert math.radians(st.contact_angle_outer_deg[0, 0]) == pytest.approx(ao, rel=1e-8)
@@ -61,7 +61,7 @@ def test_race_controls_differ_as_jones_predicts():
     assert out["inner"][0] < out["full"][0] < out["outer"][0]  # a_i
     assert out["inner"][1] > out["full"][1] > out["outer"][1]  # a_o
     for race, model in (("outer", "outer_race_control"), ("inner", "inner_race_control"), ("full", "full")):
-        st = bearing(model=model).state(np.zeros(5), w)
+        st = bearing(model=model).solve(np.zeros(5), w)
         assert st.contact_angle_inner_deg[0, 0] == pytest.approx(math.degrees(out[race][0]), rel=1e-8)
         assert st.gyroscopic_moment_Nm[0, 0] == pytest.approx(out[race][5], rel=1e-7)
         if race == "outer":
@@ -77,7 +77,7 @@ def test_inner_race_couple_direction_in_3d():
     both contact centres; the rate of the ball's angular momentum w_c e_z x (J W) must be the moment of the
     model's friction force at the inner contact, and its size M_g = J w_R w_c sin(beta)."""
     w = 18000.0 * RPM
-    st = bearing(model="inner_race_control").state(np.zeros(5), w)
+    st = bearing(model="inner_race_control").solve(np.zeros(5), w)
     ai, ao = math.radians(st.contact_angle_inner_deg[0, 0]), math.radians(st.contact_angle_outer_deg[0, 0])
     no = np.array([math.cos(ao), 0.0, math.sin(ao)])  # ball centre -> outer contact
     ni = np.array([math.cos(ai), 0.0, math.sin(ai)])  # inner contact -> ball centre
@@ -117,7 +117,7 @@ def test_jones_criterion_against_hand_calculation(rpm, expected):
     c = math.cos(ai - ao)
     hand = 1 if (Mso >= Msi * c and not Msi >= Mso * c) else (-1 if Msi >= Mso * c and not Mso >= Msi * c else 0)
     assert hand == expected
-    st = bearing().state(np.zeros(5), rpm * RPM)
+    st = bearing().solve(np.zeros(5), rpm * RPM)
     assert st.spin_moment_inner_Nm[0, 0] == pytest.approx(Msi, rel=1e-7)
     assert st.spin_moment_outer_Nm[0, 0] == pytest.approx(Mso, rel=1e-7)
     assert np.all(st.race_control == expected)
@@ -129,11 +129,11 @@ def test_auto_picks_the_race_the_criterion_admits():
     at the outer-controlled state and only the outer race at the inner-controlled one."""
     b = bearing()
     solver = Solver.of(b, auto=True)
-    assert solver.state(np.zeros(5), 1000.0 * RPM).model == "inner_race_control"
-    assert solver.state(np.zeros(5), 12000.0 * RPM).model == "outer_race_control"
-    assert np.all(b.state(np.zeros(5), 3000.0 * RPM).race_control == -1)
-    assert np.all(b.with_model("inner_race_control").state(np.zeros(5), 3000.0 * RPM).race_control == 1)
-    st = solver.state(np.zeros(5), 3000.0 * RPM)
+    assert solver.solve(np.zeros(5), 1000.0 * RPM).model == "inner_race_control"
+    assert solver.solve(np.zeros(5), 12000.0 * RPM).model == "outer_race_control"
+    assert np.all(b.solve(np.zeros(5), 3000.0 * RPM).race_control == -1)
+    assert np.all(b.with_model("inner_race_control").solve(np.zeros(5), 3000.0 * RPM).race_control == 1)
+    st = solver.solve(np.zeros(5), 3000.0 * RPM)
     assert st.model == "full" and np.all(st.race_used == 0)
 
 
@@ -144,7 +144,7 @@ def test_auto_decides_per_ball():
 
     b = bearing(arrangement="single", rows=None, row_spacing_mm=None, preload=None)
     solver = Solver.of(b, Held.of(theta_x=0.0, theta_y=0.0), auto=True)
-    st = solver.state(np.array([2000.0, 0.0, 1000.0, 0.0, 0.0]), 4000.0 * RPM)
+    st = solver.solve(np.array([2000.0, 0.0, 1000.0, 0.0, 0.0]), 4000.0 * RPM)
     assert st.model == "auto"
     used, admitted = st.race_used, st.race_control
     assert np.any(used == 1) and np.any(used == -1)

@@ -33,7 +33,7 @@ def test_iso281_rating_and_life_of_the_default_pair_by_hand():
     Y2 = 2.39 + t * (2.28 - 2.39)
     P = 0.72 * 1000.0 + Y2 * 500.0
     L10 = (C_pair / P) ** 3
-    st = b.state(np.array([1000.0, 0.0, 500.0, 0.0, 0.0]), 6000.0 * RPM)
+    st = b.solve(np.array([1000.0, 0.0, 500.0, 0.0, 0.0]), 6000.0 * RPM)
     lv = st.lives
     assert lv.C_row_N == pytest.approx(C_row, rel=1e-12)
     assert lv.C_set_N == pytest.approx(C_pair, rel=1e-12)
@@ -43,14 +43,14 @@ def test_iso281_rating_and_life_of_the_default_pair_by_hand():
 
 def test_iso281_catalogue_rating_override_and_pure_radial_load():
     b = bearing(dynamic_load_rating_N=48000.0)
-    st = b.state(np.array([2000.0, 0.0, 0.0, 0.0, 0.0]))
+    st = b.solve(np.array([2000.0, 0.0, 0.0, 0.0, 0.0]))
     # Fa/Fr = 0 <= e: double row P = Fr; C of the pair = 2^0.7 x catalogue C
     assert st.life_L10_iso281_Mrev == pytest.approx((2 ** 0.7 * 48000.0 / 2000.0) ** 3, rel=1e-12)
 
 
 @pytest.mark.parametrize("R, a1_table", [(90.0, 1.0), (95.0, 0.64), (99.0, 0.25), (99.9, 0.093)])
 def test_reliability_factor_reproduces_iso281_table(R, a1_table):
-    st = bearing(reliability_percent=R).state(np.array([1000.0, 0.0, 0.0, 0.0, 0.0]))
+    st = bearing(reliability_percent=R).solve(np.array([1000.0, 0.0, 0.0, 0.0, 0.0]))
     assert st.lives.a1 == pytest.approx(a1_table, abs=0.005)  # the table prints two significant digits
     assert st.lives.Ln_iso281_Mrev == pytest.approx(st.lives.a1 * st.life_L10_iso281_Mrev, rel=1e-12)
 
@@ -62,7 +62,7 @@ def test_deep_groove_equivalent_load_by_hand():
     arg = 600.0 / (18 * 12.7 ** 2)
     t = (arg - 0.172) / (0.345 - 0.172)
     P = 0.56 * 1000.0 + (2.30 + t * (1.99 - 2.30)) * 600.0
-    st = b.state(np.array([1000.0, 0.0, 600.0, 0.0, 0.0]))
+    st = b.solve(np.array([1000.0, 0.0, 600.0, 0.0, 0.0]))
     assert st.lives.equivalent_load_N == pytest.approx(P, rel=1e-12)
 
 
@@ -77,14 +77,14 @@ def test_reference_life_matches_iso281_for_a_radially_loaded_zero_clearance_bear
     Fr = 3000.0
     ratios = []
     for phi in (0.0, math.pi / Z):
-        st = b.state(np.array([Fr, 0.0, 0.0, 0.0, 0.0]), 0.0, phi)
+        st = b.solve(np.array([Fr, 0.0, 0.0, 0.0, 0.0]), 0.0, phi)
         ratios.append(st.life_L10r_iso16281_Mrev / st.life_L10_iso281_Mrev)
     assert np.mean(ratios) == pytest.approx(1.0, abs=0.01)
 
 
 def test_reference_life_by_hand_from_the_load_distribution():
     b = bearing()
-    st = b.state(np.array([3000.0, 0.0, 800.0, 0.0, 20.0]), 12000.0 * RPM)
+    st = b.solve(np.array([3000.0, 0.0, 800.0, 0.0, 20.0]), 12000.0 * RPM)
     lv = st.lives
     g = 12.7 * math.cos(math.radians(15.0)) / 90.0
     ratio = 1.044 * ((1 - g) / (1 + g)) ** 1.72 * (0.52 * (2 * 0.53 - 1) / (0.53 * (2 * 0.52 - 1))) ** 0.41
@@ -101,8 +101,8 @@ def test_reference_life_by_hand_from_the_load_distribution():
 def test_preload_and_speed_shorten_the_reference_life_only():
     """ISO 281 sees only Fr, Fa; the reference life sees the preload and the centrifugal loads."""
     load = np.array([2000.0, 0.0, 0.0, 0.0, 0.0])
-    light, heavy = bearing().state(load), bearing(preload={"kind": "position", "axial_um": 40.0}).state(load)
+    light, heavy = bearing().solve(load), bearing(preload={"kind": "position", "axial_um": 40.0}).solve(load)
     assert light.life_L10_iso281_Mrev == pytest.approx(heavy.life_L10_iso281_Mrev, rel=1e-12)
     assert heavy.life_L10r_iso16281_Mrev < light.life_L10r_iso16281_Mrev
-    fast = bearing().state(load, 15000.0 * RPM)
+    fast = bearing().solve(load, 15000.0 * RPM)
     assert fast.life_L10r_iso16281_Mrev < light.life_L10r_iso16281_Mrev

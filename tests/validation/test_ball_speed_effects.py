@@ -109,7 +109,7 @@ def test_position_preloaded_ball_against_hand_calculation(full):
     start = None
     for rpm in (10000.0, 20000.0):  # one ball at two speeds
         (ai, ao, Qi, Qo, Fc, Mg, _), start = hand_ball(rpm * RPM, full, A1=A1, start=start)
-        st = b.state(np.zeros(5), rpm * RPM)
+        st = b.solve(np.zeros(5), rpm * RPM)
         assert np.max(np.abs(st.displacement)) < 1e-15
         assert math.radians(st.contact_angle_inner_deg[0, 0]) == pytest.approx(ai, rel=1e-8)
         assert math.radians(st.contact_angle_outer_deg[0, 0]) == pytest.approx(ao, rel=1e-8)
@@ -126,7 +126,7 @@ def test_spring_preloaded_ball_against_hand_calculation():
     start = None
     for rpm in (5000.0, 15000.0):
         (ai, ao, Qi, Qo, Fc, Mg, _), start = hand_ball(rpm * RPM, False, thrust=250.0 / Z, start=start)
-        st = b.state(np.zeros(5), rpm * RPM)
+        st = b.solve(np.zeros(5), rpm * RPM)
         for row in (0, 1):
             assert math.radians(st.contact_angle_inner_deg[row, 0]) == pytest.approx(ai, rel=1e-8)
             assert math.radians(st.contact_angle_outer_deg[row, 0]) == pytest.approx(ao, rel=1e-8)
@@ -140,7 +140,7 @@ def test_gyroscopic_couple_direction_in_3d():
     dH/dt = w_c e_z x (J w_ball); the model's friction force at the outer contact must supply it."""
     b = bearing()
     w = 18000.0 * RPM
-    st = b.state(np.zeros(5), w)
+    st = b.solve(np.zeros(5), w)
     ai, ao = math.radians(st.contact_angle_inner_deg[0, 0]), math.radians(st.contact_angle_outer_deg[0, 0])
     no = np.array([math.cos(ao), 0.0, math.sin(ao)])  # ball centre -> outer contact
     ni = np.array([math.cos(ai), 0.0, math.sin(ai)])  # inner contact -> ball centre
@@ -173,7 +173,7 @@ def test_speed_trends_of_the_pair(preload):
     plus about the centrifugal force; axial stiffness falls from rest to 5000 rpm; a spring preload
     keeps the axial load, a position preload gains thrust from the centrifugal force."""
     b = bearing(preload=preload)
-    states = [b.state(np.zeros(5), n * RPM) for n in SPEEDS]
+    states = [b.solve(np.zeros(5), n * RPM) for n in SPEEDS]
     ai = np.array([s.contact_angle_inner_deg[0, 0] for s in states])
     ao = np.array([s.contact_angle_outer_deg[0, 0] for s in states])
     assert np.all(np.diff(ao) < 0) and np.all(np.diff(ai) > 0)

@@ -23,7 +23,7 @@ from ..unit.test_dtrb_geometry import RPM, bearing
 def test_pure_axial_load_stribeck(Fa, crown_m):
     b = bearing(preload_um=0.0, crown_radius_m=crown_m, n_slices=20)
     g = b.geometry
-    st = b.equilibrium([0.0, 0.0, Fa, 0.0, 0.0])
+    st = b.solve([0.0, 0.0, Fa, 0.0, 0.0])
     Z, a = g.rollers_per_row, g.cup_angle_rad
     assert np.allclose(st.outer_load_N[0], Fa / (Z * math.sin(a)), rtol=1e-9)
     assert np.all(st.outer_load_N[1] == 0.0)  # row 2 lifts off without preload
@@ -34,7 +34,7 @@ def test_pure_axial_load_stribeck(Fa, crown_m):
     assert np.allclose(st.rib_load_N[0], Qo * math.sin(a - g.cone_angle_rad) / math.sin(g.cone_angle_rad + af),
                        rtol=1e-8)
     # and the mirrored load goes to row 2 alone
-    st2 = b.equilibrium([0.0, 0.0, -Fa, 0.0, 0.0])
+    st2 = b.solve([0.0, 0.0, -Fa, 0.0, 0.0])
     assert np.allclose(st2.outer_load_N[1], Fa / (Z * math.sin(a)), rtol=1e-9)
 
 
@@ -46,10 +46,10 @@ def test_preloaded_pair_stiffness_closed_form(preload_um):
     g = b.geometry
     Z, a = g.rollers_per_row, g.cup_angle_rad
     h = 1e-3 * preload_um * 1e-6
-    Qp = b.with_preload(preload_um * 1e-6 + h).state(np.zeros(5)).outer_load_N[0, 0]
-    Qm = b.with_preload(preload_um * 1e-6 - h).state(np.zeros(5)).outer_load_N[0, 0]
+    Qp = b.with_preload(preload_um * 1e-6 + h).at(np.zeros(5)).outer_load_N[0, 0]
+    Qm = b.with_preload(preload_um * 1e-6 - h).at(np.zeros(5)).outer_load_N[0, 0]
     k_n = (Qp - Qm) / (2 * h) / math.sin(a)
-    K = b.state(np.zeros(5)).stiffness
+    K = b.at(np.zeros(5)).stiffness
     assert K[0, 0] == pytest.approx(2 * (Z / 2) * k_n * math.cos(a) ** 2, rel=1e-5)
     assert K[1, 1] == pytest.approx(2 * (Z / 2) * k_n * math.cos(a) ** 2, rel=1e-5)
     assert K[2, 2] == pytest.approx(2 * Z * k_n * math.sin(a) ** 2, rel=1e-5)
@@ -61,8 +61,8 @@ def test_stiffness_independent_of_preload_while_row2_is_unloaded():
     ring simply shifts by delta0 and the stiffness cannot change (exact at zero speed)."""
     b = bearing(n_slices=15)
     load = [0.0, 0.0, 5000.0, 0.0, 0.0]
-    s1 = b.with_preload(1e-6).equilibrium(load)
-    s2 = b.with_preload(4e-6).equilibrium(load)
+    s1 = b.with_preload(1e-6).solve(load)
+    s2 = b.with_preload(4e-6).solve(load)
     assert s1.loaded_rollers()[1] == 0 and s2.loaded_rollers()[1] == 0
     assert np.allclose(s1.stiffness, s2.stiffness, rtol=1e-7, atol=1e-6 * np.abs(s1.stiffness).max())
     assert s2.displacement[2] == pytest.approx(s1.displacement[2] - 3e-6, abs=1e-12)
@@ -99,7 +99,7 @@ def test_seed001_crowning_trend():
     """Seed 001 section 3-2-2 (Figs. 17-19): a larger crown radius (R = 1300, 2600, 3900 mm,
     straight) gives a stiffer bearing at the same preload (60 um) and load."""
     load = [5000.0, 0.0, 5000.0, 0.0, 0.0]
-    kxx = [bearing(preload_um=60.0, crown_radius_m=R, n_slices=20).equilibrium(load).stiffness[0, 0]
+    kxx = [bearing(preload_um=60.0, crown_radius_m=R, n_slices=20).solve(load).stiffness[0, 0]
            for R in (1.3, 2.6, 3.9, math.inf)]
     assert np.all(np.diff(kxx) > 0)
 
@@ -107,8 +107,8 @@ def test_seed001_crowning_trend():
 def test_radial_direction_does_not_matter():
     # 20 rollers: a quarter turn maps the rollers onto each other, so FY gives KYY = KXX under FX
     b = bearing(preload_um=20.0, n_slices=10)
-    sx = b.equilibrium([6000.0, 0.0, 3000.0, 0.0, 0.0])
-    sy = b.equilibrium([0.0, 6000.0, 3000.0, 0.0, 0.0])
+    sx = b.solve([6000.0, 0.0, 3000.0, 0.0, 0.0])
+    sy = b.solve([0.0, 6000.0, 3000.0, 0.0, 0.0])
     assert sy.stiffness[1, 1] == pytest.approx(sx.stiffness[0, 0], rel=1e-8)
     assert sy.stiffness[0, 0] == pytest.approx(sx.stiffness[1, 1], rel=1e-8)
     assert sy.displacement[1] == pytest.approx(sx.displacement[0], rel=1e-8)

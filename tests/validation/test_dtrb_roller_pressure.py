@@ -18,7 +18,7 @@ def _pressure(crown: str):
     rotor = build_rotor(parse_deck(text, "seed001.yaml").deck)
     st = operating_state(rotor)
     dtrb = next(b for b in rotor.bearings if b.name == "dtrb")
-    state = dtrb.equilibrium(dtrb.full_load(st.load_of("dtrb")), rotor.speed_rad_s)
+    state = dtrb.solve(dtrb.full_load(st.load_of("dtrb")), rotor.speed_rad_s)
     return most_loaded_roller_pressure(dtrb.geometry, state, nx=48, ny=192)
 
 

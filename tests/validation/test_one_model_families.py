@@ -34,7 +34,7 @@ from spindlesim.analysis.modal import solve_modal
 from spindlesim.analysis.operating import operating_state
 from spindlesim.analysis.static import solve_static
 from spindlesim.analysis.transient.engine import Perturbation, TransientSettings, simulate
-from spindlesim.bearings.roller import flexible_race, rigid_race
+from spindlesim.bearings.roller import bearing as roller
 from spindlesim.bearings.statics import equilibrium_under_load
 from spindlesim.deck import default_deck, parse_deck
 from spindlesim.model.build import build_rotor
@@ -126,10 +126,10 @@ def differences(force, q: np.ndarray, h: np.ndarray) -> np.ndarray:
 def pitch_points(b, speed: float) -> np.ndarray:
     """Shaft angles of the cage positions over one element pitch that the family's linearized()
     averages (rigid race 24, flexible race 4, ball set ``pitch_samples``)."""
-    if isinstance(b, rigid_race.RigidRaceBearing):
-        z, cage, n = b.rollers, b.kinematics.cage_ratio, rigid_race.PITCH_POINTS
-    elif isinstance(b, flexible_race.FlexibleRaceBearing):
-        z, cage, n = b.rollers, b.kinematics.cage_ratio, flexible_race.PITCH_POINTS
+    if isinstance(b, roller.RigidRaceBearing):
+        z, cage, n = b.rollers, b.kinematics.cage_ratio, roller.RIGID_RACE_PITCH_POINTS
+    elif isinstance(b, roller.FlexibleRaceBearing):
+        z, cage, n = b.rollers, b.kinematics.cage_ratio, roller.FLEXIBLE_RACE_PITCH_POINTS
     else:  # ball set
         z, cage, n = b.geometry.balls, b.geometry.cage_ratio(), b.pitch_samples
     return 2.0 * math.pi / z / cage * np.arange(n) / n

@@ -100,7 +100,7 @@ def test_position_preload_rises_faster_with_temperature_than_with_speed_alone(sp
     for rpm in (4000.0, 12000.0):
         st = operating_state(spindle.rotor, rpm, spindle.shaft)
         front = next(b for b in st.bearings if b.name == "front")
-        cold[rpm] = float(np.max(front.state(st.load_of("front"), rpm * np.pi / 30).row_axial_load_N))
+        cold[rpm] = float(np.max(front.solve(st.load_of("front"), rpm * np.pi / 30).row_axial_load_N))
     warm = {rpm: _front_thrust(spindle.steady(rpm)) for rpm in (4000.0, 12000.0)}
     rise_cold, rise_warm = cold[12000.0] - cold[4000.0], warm[12000.0] - warm[4000.0]
     assert rise_cold > 0

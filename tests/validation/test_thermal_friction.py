@@ -94,7 +94,7 @@ def test_lubricant_from_iso_grade_reuses_the_walther_data():
 
 def test_set_palmgren_takes_each_rows_loads_from_the_state():
     b = bearing()
-    st = b.state(np.array([1000.0, 0.0, 0.0, 0.0, 0.0]), 12000 * RPM)
+    st = b.solve(np.array([1000.0, 0.0, 0.0, 0.0, 0.0]), 12000 * RPM)
     Fr, Fa = row_loads_N(st)
     assert np.sum(Fr) == pytest.approx(1000.0, rel=1e-6)          # the rows share the radial load
     assert Fa.tolist() == pytest.approx(np.abs(st.row_axial_load_N).tolist(), rel=1e-14)
@@ -107,7 +107,7 @@ def test_set_palmgren_takes_each_rows_loads_from_the_state():
 def test_kinematics_agree_with_the_states_cage_speed(model):
     """w_c from no slip + race control equals sqrt(F_c / (m d_m/2)) of the quasi-static state."""
     b = bearing(model=model)
-    st = b.state(np.array([2000.0, -800.0, 1000.0, 15.0, -10.0]), 15000 * RPM)
+    st = b.solve(np.array([2000.0, -800.0, 1000.0, 15.0, -10.0]), 15000 * RPM)
     g = b.geometry
     k = ball_kinematics(st, g, model)
     wc = np.sqrt(st.centrifugal_force_N / (g.ball_mass_kg * 0.5 * g.pitch_diameter_m))
@@ -123,7 +123,7 @@ def test_spin_heat_by_hand_at_a_slow_speed():
                       inner_conformity=0.52, outer_conformity=0.53)
     b = BallBearing(g)
     w = 5 * RPM
-    st = b.state(np.array([0.0, 0.0, 2000.0, 0.0, 0.0]), w)
+    st = b.solve(np.array([0.0, 0.0, 2000.0, 0.0, 0.0]), w)
     a = math.radians(float(st.contact_angle_inner_deg[0, 0]))
     assert float(st.contact_angle_outer_deg[0, 0]) == pytest.approx(math.degrees(a), abs=1e-5)
     Q = float(st.element_load_inner_N[0, 0])
@@ -148,7 +148,7 @@ def test_ehl_rolling_moment_against_the_skf_model_of_a_deep_groove_bearing():
     oil = Lubricant.from_grade("ISO VG 22")
     ratios = []
     for n, Fr in ((3000.0, 2000.0), (3000.0, 500.0), (1000.0, 2000.0)):
-        st = b.state(np.array([Fr, 0.0, 0.0, 0.0, 0.0]), n * RPM)
+        st = b.solve(np.array([Fr, 0.0, 0.0, 0.0, 0.0]), n * RPM)
         h = ball_bearing_heat(st, g, oil, 40.0, ContactFrictionOptions(inlet_shear_heating=False))
         skf = 3.9e-7 * 70.0 ** 1.96 * Fr ** 0.54 * (22.0 * n) ** 0.6 * 1e-3
         ratios.append(h.rolling_ehl_W / (n * RPM) / skf)
@@ -176,7 +176,7 @@ def test_skf_factors_and_sphere_drag():
 
 def test_energy_bookkeeping_and_heat_split():
     b = bearing()
-    st = b.state(np.array([1000.0, 0.0, 0.0, 0.0, 0.0]), 12000 * RPM)
+    st = b.solve(np.array([1000.0, 0.0, 0.0, 0.0, 0.0]), 12000 * RPM)
     oil = Lubricant.from_grade("ISO VG 22")
     h = ball_bearing_heat(st, b.geometry, oil, 40.0, ContactFrictionOptions(oil_volume_fraction=0.002))
     by_source = h.spin_W + h.rolling_ehl_W + h.hysteresis_W + h.drag_W
@@ -189,7 +189,7 @@ def test_energy_bookkeeping_and_heat_split():
     assert more.drag_W > 3.0 * h.drag_W
     hot = ball_bearing_heat(st, b.geometry, oil, 80.0, ContactFrictionOptions(oil_volume_fraction=0.002))
     assert hot.rolling_ehl_W < h.rolling_ehl_W
-    rest = ball_bearing_heat(b.state(np.zeros(5), 0.0), b.geometry, oil, 40.0)
+    rest = ball_bearing_heat(b.solve(np.zeros(5), 0.0), b.geometry, oil, 40.0)
     assert rest.total_W == 0.0
 
 
@@ -214,7 +214,7 @@ def test_nasa_35mm_bore_bearing_heat():
     T_in = 394.0 - 273.15
     local, palm = [], []
     for n in NASA_RPM:
-        st = b.state(np.array([0.0, 0.0, 667.0, 0.0, 0.0]), n * RPM)
+        st = b.solve(np.array([0.0, 0.0, 667.0, 0.0, 0.0]), n * RPM)
         local.append(ball_bearing_heat(st, b.geometry, oil, T_in, ContactFrictionOptions(oil_volume_fraction=0.01)))
         palm.append(ball_palmgren(pitch_diameter_m=46.5e-3, contact_angle_rad=math.radians(24.0), radial_N=0.0,
                                   axial_N=667.0, static_rating_N=8000.0, speed_rad_s=n * RPM,

@@ -103,7 +103,7 @@ def test_db_pair_preload_from_an_inner_outer_temperature_difference(ball):
     b = bearing() if ball is BEARING_STEEL else bearing(
         ball_material={"E_GPa": 310.0, "poisson": 0.26, "density_kg_m3": 3200.0})
     g2, pre2, gr = at_temperature(b.geometry, b.preload, HOT, BEARING_STEEL, ball)
-    model = BallBearing(g2, pre2).state(np.zeros(5), 0.0).row_axial_load_N
+    model = BallBearing(g2, pre2).solve(np.zeros(5), 0.0).row_axial_load_N
     hand = _hand_row_thrust(g2, pre2.row_offsets(2)[0], g2.E_star_Pa)
     assert model.tolist() == pytest.approx([hand, hand], rel=1e-9)
     # the engineering estimate: the radial change acts as an axial one (same |A|, dA_r / tan(a) to first
@@ -115,7 +115,7 @@ def test_db_pair_preload_from_an_inner_outer_temperature_difference(ball):
                                                                  g.reference_radial_m)
     est = _hand_row_thrust(g, 10.5e-6 + dAa, g.E_star_Pa)
     assert 1.03 < est / hand < 1.12
-    rest = b.state(np.zeros(5), 0.0).row_axial_load_N[0]
+    rest = b.solve(np.zeros(5), 0.0).row_axial_load_N[0]
     rise = hand / rest
     if ball is BEARING_STEEL:
         assert rise == pytest.approx(1092.2 / 254.18, rel=1e-3)     # 254 N -> 1092 N for 10 K
@@ -138,7 +138,7 @@ def test_df_is_more_sensitive_than_db_to_a_warm_inner_ring():
     for arr in ("DB", "DF"):
         b = bearing(arrangement=arr)
         g2, pre2, gr = at_temperature(b.geometry, b.preload, HOT)
-        out[arr] = (gr.row_offset_change_m[0], BallBearing(g2, pre2).state(np.zeros(5), 0.0).row_axial_load_N[0])
+        out[arr] = (gr.row_offset_change_m[0], BallBearing(g2, pre2).solve(np.zeros(5), 0.0).row_axial_load_N[0])
     assert out["DB"][0] < 0.0 < out["DF"][0]
     assert out["DF"][1] > out["DB"][1]
 

@@ -19,13 +19,14 @@ from spindlesim.analysis.transient.engine import TransientSettings, simulate
 from spindlesim.analysis.transient.spectrum import distinct_points, poincare_spread
 from spindlesim.analysis.transient.system import Excitation, TimeLoad
 from spindlesim.bearings.roller.load_distribution import static_load_distribution
-from spindlesim.bearings.roller.section import TransientOuterRace, TransientSection
+from spindlesim.bearings.roller.section import RollerOuterRace
+from spindlesim.deck.transient import TransientSection
 from spindlesim.model.rig import rig_rotor
 
 
 def flexible(rollers, segments=12, **kw):
     """The rig of the embedded default deck with seed 000's flexible race (a journal rotor)."""
-    return rig_rotor(TransientSection(model="flexible_race", outer_race=TransientOuterRace(segments=segments), **kw),
+    return rig_rotor(TransientSection(model="flexible_race", outer_race=RollerOuterRace(segments=segments), **kw),
                      rollers=rollers)
 
 

@@ -15,7 +15,7 @@ import pytest
 from spindlesim.analysis.transient.engine import TransientSettings, simulate
 from spindlesim.analysis.transient.spectrum import distinct_points, poincare_spread
 from spindlesim.bearings.roller.kinematics import CageKinematics
-from spindlesim.bearings.roller.rigid_race import RigidRaceBearing
+from spindlesim.bearings.roller.bearing import RigidRaceBearing
 from spindlesim.contact.hertz import palmgren_stiffness
 from spindlesim.model.rig import journal_rotor
 

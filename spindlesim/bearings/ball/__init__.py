@@ -12,8 +12,9 @@ exact 5x5 tangent; ISO 281 and ISO/TS 16281 lives.
 - ``geometry``: :class:`BallGeometry` (rows, grooves, Hertz constants) and :func:`ball_geometry`.
 - ``kernel``: compiled ball equilibria (Newton, fallback, closed form at rest; outer-, inner-race control
   or the shared couple), row reactions, tangents.
-- ``bearing``: :class:`BallBearing` (the bearing contract, states); ``equilibrium``: the set equilibrium
-  with DOFs free under the load or held at a displacement (:class:`Held`).
+- ``bearing``: :class:`BallBearing` (the bearing contract; states: ``solve(load)`` under a load, ``at(q)`` at a
+  displacement); ``equilibrium``: the set equilibrium with DOFs free under the load or held at a displacement
+  (:class:`Held`).
 - ``kinematics``, ``checks``: the balls' rolling kinematics (spin, roll), Jones' race-control criterion
   and the truncation of the contact ellipses at the shoulders.
 - ``rating``: ISO 281 load rating and life, ISO/TS 16281 reference rating life.

@@ -52,7 +52,7 @@ from ..base import FIVE, BearingBase, shaft_angle
 from . import checks
 from . import equilibrium as eq
 from . import kernel as kn
-from .equilibrium import FREE, BallEquilibriumError, Held
+from .equilibrium import FREE, BallEquilibriumError, Held, Work
 from .geometry import BallGeometry
 from .kinematics import RACE_CODES, ball_motion
 from .rating import RatingInputs, lives
@@ -64,7 +64,7 @@ MODELS = ("outer_race_control", "inner_race_control", "full")
 #: traction coefficient above which the state warns that the gyroscopic couple exceeds friction
 TRACTION_WARN = 0.1
 
-__all__ = ["BallBearing", "BallEquilibriumError", "Held", "MODELS", "Preload"]
+__all__ = ["BallBearing", "BallEquilibriumError", "Held", "MODELS", "Preload", "Work"]
 
 
 @dataclass(frozen=True)
@@ -130,7 +130,7 @@ def _made_as(geometry, preload):
 
 
 class BallBearing(BearingBase):
-    """Quasi-static ball bearing (set); immutable apart from warm-start hints."""
+    """Quasi-static ball bearing (set); immutable: a solve's warm starts live in its own :class:`Work`."""
 
     dof_names = FIVE
     internal_mass = np.zeros(0)
@@ -174,7 +174,6 @@ class BallBearing(BearingBase):
         self.made = made if made is not None else _made_as(geometry, preload)
         #: thrust-side shoulders of the rings (truncation check); None: the typical ratio (checks.shoulders_of)
         self.shoulders = checks.shoulders_of(geometry) if shoulders is None else shoulders
-        self._grown_p: tuple[float, np.ndarray] | None = None
         g = geometry
         D, dm = g.ball_diameter_m, g.pitch_diameter_m
         p = np.zeros(kn.N_PARAMS)
@@ -204,11 +203,6 @@ class BallBearing(BearingBase):
         self._s_float = int(preload.floating_thrust) if np.any(s == preload.floating_thrust) else int(s[0])
         self._floating = (s == self._s_float) if preload.kind == "spring" else np.zeros(g.rows, bool)
         self.fully_floating = bool(self._floating.all())
-        self._X = np.full((g.rows, g.balls, 2), np.nan)  # warm start of the ball centres
-        self._shift_hint: float | None = None
-        # the last set equilibrium of an operating point (static_displacement, linearized): the start of
-        # the next one, a neighbouring load or speed (a Campbell diagram's), instead of the unloaded ring
-        self._q_last: np.ndarray | None = None
 
     # ---- variants -------------------------------------------------------------------------
     def with_preload(self, value: float) -> "BallBearing":
@@ -263,30 +257,22 @@ class BallBearing(BearingBase):
         return f
 
     # ---- evaluation ---------------------------------------------------------------------------
-    def _params(self, om: float) -> np.ndarray:
-        """The kernel parameters at the speed om: A_r grown by ``speed_growth`` (cached per speed)."""
-        if self.speed_growth is None or om == 0.0:
-            return self._p
-        if self._grown_p is None or self._grown_p[0] != om:
-            p = self._p.copy()
-            p[kn.A_RAD0] += float(self.speed_growth(om))
-            self._grown_p = (om, p)
-        return self._grown_p[1]
-
-    def _rows(self, q: np.ndarray, om: float, phi: float, w: np.ndarray, idx: np.ndarray) -> _RowEval:
+    def _rows(self, q: np.ndarray, om: float, phi: float, w: np.ndarray, idx: np.ndarray,
+              work: Work | None = None) -> _RowEval:
+        work = Work(self) if work is None else work
         g = self.geometry
         n, Z = idx.size, g.balls
-        X = np.ascontiguousarray(self._X[idx])
+        X = np.ascontiguousarray(work.centres[idx])
         f_rows, K_rows = np.empty((n, 5)), np.empty((n, 5, 5))
         out = [np.empty((n, Z)) for _ in range(7)]
         try:
-            status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), self._params(om),
+            status = kn.evaluate_rows(np.ascontiguousarray(q, dtype=float), float(om), float(phi), work.params(self, om),
                                       self._row_sign[idx], self._row_zc[idx], self._row_offset[idx],
                                       np.ascontiguousarray(w[idx], dtype=float),
                                       np.ascontiguousarray(self.race[idx], dtype=np.float64), Z, X, f_rows, K_rows,
                                       *out)
         except ZeroDivisionError:  # a degenerate ball (e.g. opposite contact normals): the rings pass a ball
-            self._X[:] = np.nan
+            work.forget()
             raise BallEquilibriumError(
                 f"bearing {self.name!r}: the inner ring at q = {np.round(np.asarray(q) * 1e6, 4).tolist()} (um, urad) "
                 f"moves its groove centre past the outer one at a ball (their distance as made: "
@@ -294,29 +280,31 @@ class BallBearing(BearingBase):
         if status >= 0:
             k, j = idx[status // Z], status % Z
             psi = phi + 2.0 * math.pi * j / Z
-            self._X[:] = np.nan
+            work.forget()
             raise BallEquilibriumError(
                 f"bearing {self.name!r}: equilibrium of ball {j + 1} of row {k + 1} "
                 f"(psi {math.degrees(psi) % 360:.1f} deg) "
                 f"did not converge (damped Newton on the ball centre, {kn.MAX_NEWTON} iterations) at "
                 f"{om * 30 / math.pi:.6g} rpm, inner ring at q = {np.round(np.asarray(q) * 1e6, 4).tolist()} "
                 f"(um, urad), model {self.model}")
-        self._X[idx] = X
+        work.centres[idx] = X
         Qi, Qo, ai, ao, Fc, Mg, psi = out
         return _RowEval(f_rows, K_rows, Qi, Qo, ai, ao, Fc, Mg, psi)
 
-    def _evaluate(self, q: np.ndarray, om: float, phi: float) -> _SetEval:
+    def _evaluate(self, q: np.ndarray, om: float, phi: float, work: Work | None = None) -> _SetEval:
+        """The set at q (``work``: the warm starts of the call, a fresh one by default)."""
+        work = Work(self) if work is None else work
         rows = self.geometry.rows
         all_rows = np.arange(rows)
         if self.preload.kind != "spring":
-            ev = self._rows(q, om, phi, np.zeros(rows), all_rows)
+            ev = self._rows(q, om, phi, np.zeros(rows), all_rows, work)
             return _SetEval(ev.f_rows.sum(axis=0), ev.K_rows.sum(axis=0), ev, 0.0)
         fl = np.flatnonzero(self._floating)
-        shift, evf = self._float_solve(q, om, phi, fl)
+        shift, evf = self._float_solve(q, om, phi, fl, work)
         w = np.zeros(rows)
         w[fl] = shift
         fixed = np.flatnonzero(~self._floating)
-        ev = _merge(rows, fl, evf, fixed, self._rows(q, om, phi, w, fixed)) if fixed.size else evf
+        ev = _merge(rows, fl, evf, fixed, self._rows(q, om, phi, w, fixed, work)) if fixed.size else evf
         Kg = evf.K_rows.sum(axis=0)
         Kc = Kg - np.outer(Kg[:, 2], Kg[2, :]) / Kg[2, 2]
         Kc[2, :] = 0.0
@@ -324,7 +312,7 @@ class BallBearing(BearingBase):
         K = Kc + (ev.K_rows.sum(axis=0) - Kg)
         return _SetEval(ev.f_rows.sum(axis=0), K, ev, shift)
 
-    def _float_solve(self, q, om, phi, fl) -> tuple[float, _RowEval]:
+    def _float_solve(self, q, om, phi, fl, work: Work) -> tuple[float, _RowEval]:
         """Axial shift w (along z) of the floating outer rings with their thrust = axial_N."""
         g = self.geometry
         Fs, sg = self.preload.axial_N, self._s_float
@@ -333,20 +321,20 @@ class BallBearing(BearingBase):
         def thrust(v):  # v: approach in the floating rows' direction, w = -sg v
             w = np.zeros(rows)
             w[fl] = -sg * v
-            ev = self._rows(q, om, phi, w, fl)
+            ev = self._rows(q, om, phi, w, fl, work)
             return -sg * ev.f_rows[:, 2].sum(), ev.K_rows[:, 2, 2].sum(), ev
 
-        if self._shift_hint is None:
+        if work.shift is None:
             per_ball = Fs / (fl.size * g.balls * max(math.sin(g.mounted_angle_rad), 0.05))
             v = (per_ball / g.K_series) ** (2.0 / 3.0) / max(math.sin(g.mounted_angle_rad), 0.05) - sg * q[2]
         else:
-            v = self._shift_hint - sg * q[2]
+            v = work.shift - sg * q[2]
         lo = hi = None
         for _ in range(200):
             h, k, ev = thrust(v)
             r = h - Fs
             if abs(r) <= 1e-12 * Fs:
-                self._shift_hint = v + sg * q[2]
+                work.shift = v + sg * q[2]
                 return -sg * v, ev
             if r < 0.0:
                 lo = v
@@ -356,7 +344,7 @@ class BallBearing(BearingBase):
             if lo is not None and hi is not None and not lo < vn < hi:
                 vn = 0.5 * (lo + hi)
             if lo is not None and hi is not None and hi - lo <= 1e-16 * max(abs(v), 1e-3):
-                self._shift_hint = v + sg * q[2]
+                work.shift = v + sg * q[2]
                 return -sg * v, ev
             v = vn
         raise BallEquilibriumError(
@@ -380,11 +368,10 @@ class BallBearing(BearingBase):
             load[: sl.size] = sl
         pitch = 2.0 * math.pi / self.geometry.balls
         K = np.zeros((5, 5))
-        q = None
+        q, work = None, Work(self)  # each cage position starts from the one before
         for m in range(self.pitch_samples):
             phi = m * pitch / self.pitch_samples
-            q, ev, _ = self._warm_equilibrium(load, float(speed), phi) if q is None else \
-                self._equilibrium(load, float(speed), phi, q)
+            q, ev, _ = self._equilibrium(load, float(speed), phi, q, work=work)
             K += ev.K
         return K / self.pitch_samples, np.zeros((5, 5))
 
@@ -394,40 +381,28 @@ class BallBearing(BearingBase):
         if static_load is not None:
             sl = np.asarray(static_load, float)
             load[: sl.size] = sl
-        return self._warm_equilibrium(load, float(speed), 0.0)[0].copy()
-
-    def _warm_equilibrium(self, load: np.ndarray, speed: float, phi: float):
-        """``_equilibrium`` started from the last operating point's (from the unloaded ring if that
-        fails): the same root to the set tolerance, in one or two Newton steps instead of four or five."""
-        start = self._q_last
-        try:
-            out = self._equilibrium(load, speed, phi, start)
-        except BallEquilibriumError:
-            if start is None:
-                raise
-            out = self._equilibrium(load, speed, phi)
-        self._q_last = out[0].copy()
-        return out
+        return self._equilibrium(load, float(speed), 0.0)[0].copy()
 
     # ---- equilibrium and results ---------------------------------------------------------------
-    def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE):
+    def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE,
+                     work: Work | None = None):
         """(q, evaluation, iterations) with reaction(q) + load = 0 on the free DOFs (:mod:`.equilibrium`)."""
-        return eq.solve(self, load, speed, phi, q0, max_iter, held)
+        return eq.solve(self, load, speed, phi, q0, max_iter, held, Work(self) if work is None else work)
 
-    def equilibrium(self, load, speed: float = 0.0, cage_angle: float = 0.0) -> np.ndarray:
-        """Inner-ring displacement q (5) carrying ``load`` (what the shaft puts on the bearing)."""
-        return self._equilibrium(load, float(speed), float(cage_angle))[0].copy()
-
-    def state(self, load, speed: float = 0.0, cage_angle: float = 0.0, held: Held = FREE, q0=None) -> BallState:
-        """Equilibrium under ``load`` (Fx, Fy, Fz [N], Mx, My [N m]) at ``speed`` [rad/s], with results;
-        ``held``: DOFs held at prescribed displacements (their load components must be 0); ``q0``: a start."""
-        q, ev, its = self._equilibrium(load, float(speed), float(cage_angle), q0, held=held)
+    def solve(self, load, speed: float = 0.0, cage_angle: float = 0.0, held: Held = FREE, q0=None,
+              work: Work | None = None) -> BallState:
+        """The state under ``load`` (Fx, Fy, Fz [N], Mx, My [N m], what the shaft puts on the bearing) at
+        ``speed`` [rad/s]: the equilibrium with its results; ``held``: DOFs held at prescribed displacements
+        (their load components must be 0); warm starts, passed in: ``q0`` the inner ring's, ``work`` the balls'
+        (a :class:`Work` a chain of solves shares; default: the built-in starts)."""
+        q, ev, its = self._equilibrium(load, float(speed), float(cage_angle), q0, held=held, work=work)
         return self._state(q, ev, float(speed), float(cage_angle), its, load, held)
 
-    def state_at(self, q, speed: float = 0.0, cage_angle: float = 0.0) -> BallState:
-        """Results at a given inner-ring displacement q (5)."""
+    def at(self, q, speed: float = 0.0, cage_angle: float = 0.0, work: Work | None = None) -> BallState:
+        """The state at a given inner-ring displacement q (5): evaluated, nothing solved (``work``: as in
+        :meth:`solve`)."""
         qq = np.array(q, float)
-        return self._state(qq, self._evaluate(qq, float(speed), float(cage_angle)), float(speed),
+        return self._state(qq, self._evaluate(qq, float(speed), float(cage_angle), work), float(speed),
                            float(cage_angle), 0)
 
     def _state(self, q, ev: _SetEval, speed: float, phi: float, iterations: int, load=None,

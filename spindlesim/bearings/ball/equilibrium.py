@@ -11,9 +11,10 @@ L: load of the shaft on the bearing).  On a held DOF the load L_k must be 0 (the
 load there); the holding load H_k = -f_k(q) is what the constraint must put on the bearing, so
 that the bearing carries L + H in all.
 
-Newton with Levenberg-Marquardt damping lambda D (D: every ball at 1 um approach, the same for
-every DOF once tilts are measured at the groove-centre radius R_i), steps capped at 20 um at the
-balls, converged when every free component of the residual is <= 1e-10 of the load scale.
+The one damped Newton (``bearings.statics.damped_newton``) with Levenberg-Marquardt damping lambda D
+(D: every ball at 1 um approach, the same for every DOF once tilts are measured at the groove-centre
+radius R_i), steps capped at 20 um at the balls, converged when every free component of the residual
+is <= 1e-10 of the load scale.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..base import FIVE
+from ..statics import damped_newton
 
 
 class BallEquilibriumError(ArithmeticError):
@@ -65,6 +67,34 @@ class Held:
 FREE = Held()
 
 
+class Work:
+    """What one call carries from one evaluation of the set to the next, never kept on the bearing: each
+    ball's centre (its Newton start; NaN: the built-in start), the floating outer rings' axial shift (None:
+    from the spring force) and the kernel parameters at the speed.  Each solve or evaluation makes its own."""
+
+    def __init__(self, bearing: "BallBearing"):
+        g = bearing.geometry
+        self.centres = np.full((g.rows, g.balls, 2), np.nan)
+        self.shift: float | None = None
+        self._params: tuple["BallBearing", float, np.ndarray] | None = None
+
+    def params(self, b: "BallBearing", om: float) -> np.ndarray:
+        """The kernel parameters of ``b`` at the speed om: A_r grown by its ``speed_growth``."""
+        if b.speed_growth is None or om == 0.0:
+            return b._p
+        if self._params is None or self._params[0] is not b or self._params[1] != om:
+            from . import kernel as kn  # not at import: a deck that reads Held stays light
+
+            p = b._p.copy()
+            p[kn.A_RAD0] += float(b.speed_growth(om))
+            self._params = (b, om, p)
+        return self._params[2]
+
+    def forget(self) -> None:
+        """Back to the built-in starts (after a failed evaluation)."""
+        self.centres[:] = np.nan
+
+
 def reference_stiffness(geometry) -> np.ndarray:
     """Diagonal scale of the Levenberg-Marquardt damping of the set Newton: every ball at 1 um
     approach, the same for every DOF once tilts are measured at the groove-centre radius (a
@@ -86,9 +116,10 @@ def check_held(bearing, load: np.ndarray, held: Held) -> None:
                              f"it ({load[k]:g}); a held DOF carries what holds it (the holding load)")
 
 
-def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE):
+def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE, work=None):
     """(q, evaluation, iterations) with reaction(q) + load = 0 on the free DOFs, the held DOFs at
-    their values (damped Newton; ``bearing`` a :class:`~.bearing.BallBearing`)."""
+    their values (damped Newton; ``bearing`` a :class:`~.bearing.BallBearing`; ``work``: the call's
+    :class:`~.bearing.Work`, its warm starts from evaluation to evaluation)."""
     g = bearing.geometry
     L = np.asarray(load, float)
     check_held(bearing, L, held)
@@ -109,9 +140,7 @@ def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100,
     dofs = np.flatnonzero(free)
     q = np.zeros(5) if q0 is None else np.array(q0, float)
     q[mask] = np.asarray(held.values, float)[mask]
-    ref = reference_stiffness(g)
-    lam = 1e-4
-    ev = bearing._evaluate(q, speed, phi)
+    ev = bearing._evaluate(q, speed, phi, work)
     if dofs.size == 0:
         return q, ev, 0
     # the reaction's noise follows the rows' own forces, not only the external load: a position
@@ -119,31 +148,25 @@ def solve(bearing, load, speed: float, phi: float, q0=None, max_iter: int = 100,
     # own equilibrium is solved to about 1e-11 of them (seed 001's pair under a 0.25 N load at
     # 6000 rpm: the same q gave -1.4e-9 and -3.4e-9 N, with 461 N in a row)
     tol = max(tol, 1e-11 * float(np.max(np.abs(ev.rows.f_rows * wgt))))
-    r = ev.f + L
-    merit = float(np.linalg.norm((r * wgt)[dofs]))  # acceptance: weighted 2-norm (descent of LM)
-    worst = float(np.max(np.abs((r * wgt)[dofs])))  # convergence: every component
-    for it in range(1, max_iter + 1):
-        if worst <= tol:
-            return q, ev, it - 1
-        A = ev.K[np.ix_(dofs, dofs)] + lam * np.diag(ref[dofs])
-        step = np.zeros(5)
-        step[dofs] = np.linalg.solve(A, r[dofs])
-        big = float(np.max(np.abs(step / wgt))) / 20e-6
-        if big > 1.0:
-            step /= big
-        trial = q + step
-        evt = bearing._evaluate(trial, speed, phi)
-        rt = evt.f + L
-        mt = float(np.linalg.norm((rt * wgt)[dofs]))
-        # equal merit is accepted: inside a clearance the reaction does not change
-        if mt <= merit:
-            q, ev, r, merit = trial, evt, rt, mt
-            worst = float(np.max(np.abs((r * wgt)[dofs])))
-            lam = max(lam * 0.01, 1e-14)
-        else:
-            lam *= 10.0
-            if lam > 1e10:
-                break
+    w = wgt[dofs]
+
+    def residual(qq, e):
+        return (e.f + L)[dofs], e.K[np.ix_(dofs, dofs)], (qq, e)
+
+    def evaluate(x):
+        qq = q.copy()
+        qq[dofs] = x
+        return residual(qq, bearing._evaluate(qq, speed, phi, work))
+
+    # acceptance: the weighted 2-norm (descent of LM; equal merit taken: inside a clearance the reaction does
+    # not change); convergence: every weighted component
+    out = damped_newton(evaluate, q[dofs], converged=lambda r, _: float(np.max(np.abs(r * w))) <= tol,
+                        merit=lambda r: float(np.linalg.norm(r * w)), cap=20e-6 * w,
+                        damping=reference_stiffness(g)[dofs], lam0=1e-4, shrink=0.01, grow=10.0, lam_max=1e10,
+                        max_iter=max_iter, evaluated=residual(q, ev))
+    if out.converged:
+        return out.data[0], out.data[1], out.iterations
+    worst = float(np.max(np.abs(out.R * w)))
     raise BallEquilibriumError(
         f"bearing {bearing.name!r}: no set equilibrium under the load {np.round(L, 6).tolist()} (N, N m) at "
         f"{speed * 30 / math.pi:.6g} rpm, cage angle {math.degrees(phi):.3g} deg ({bearing.preload.label()}; "

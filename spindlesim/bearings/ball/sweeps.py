@@ -1,9 +1,9 @@
 """Sweeps over preload, a load component and speed, and the standalone run of a ``BallSection``.
 
-Each point is a full set equilibrium (:meth:`BallBearing.state`) at cage angle 0 with the section's
+Each point is a full set equilibrium (:meth:`BallBearing.solve`) at cage angle 0 with the section's
 held DOFs; consecutive points start from the previous displacement (the result does not depend on
 it).  With ``model: auto`` every ball of every point takes the race control Jones' criterion admits
-at its state (:meth:`Solver.state`).  The run then checks what the states say about themselves: a free inner ring
+at its state (:meth:`Solver.solve`).  The run then checks what the states say about themselves: a free inner ring
 that tilts more than :data:`TILT_WARN_RAD` (with the state it would have with the tilt held) and
 contact ellipses that run over a shoulder; each finding is logged and kept on the run for the file.
 """
@@ -52,12 +52,12 @@ class Solver:
     def with_preload(self, value: float) -> "Solver":
         return Solver(self.bearing.with_preload(value), self.held, self.auto)
 
-    def state(self, load, speed: float, q0=None) -> BallState:
+    def solve(self, load, speed: float, q0=None) -> BallState:
         """The state at (load, speed).  auto: every ball starts under outer-race control and then takes the race
         Jones' criterion admits at its state (keeping its race where both are admitted), solved again until no
         ball changes; a ball sent back to a race it has left shares the couple (full)."""
         load = np.asarray(load, float)
-        st = self.bearing.state(load, speed, 0.0, self.held, q0)
+        st = self.bearing.solve(load, speed, 0.0, self.held, q0)
         if not self.auto or speed == 0.0:
             return st
         codes = st.race_used.copy()
@@ -73,7 +73,7 @@ class Solver:
             tried[1] |= want == 1
             tried[-1] |= want == -1
             codes = want
-            st = self.bearing.with_race(codes).state(load, speed, 0.0, self.held, st.displacement)
+            st = self.bearing.with_race(codes).solve(load, speed, 0.0, self.held, st.displacement)
         log.warning("bearing %r at %.6g rpm: the race control of the balls did not settle in %d solves under model "
                     "auto; the last state is kept", self.bearing.name, speed / RPM, MAX_AUTO_SOLVES)
         return st
@@ -82,7 +82,7 @@ class Solver:
         """States of (solver, load, speed) triples, each started from the previous displacement."""
         states, q = [], None
         for solver, load, speed in points:
-            st = solver.state(load, float(speed), q)
+            st = solver.solve(load, float(speed), q)
             q = st.displacement
             states.append(st)
         return states
@@ -186,7 +186,7 @@ def tilt_check(solver: Solver, state: BallState, load: np.ndarray, speed: float)
     mask = tuple(solver.held.mask[:3]) + (True, True)
     values = tuple(solver.held.values[:3]) + (0.0, 0.0)
     held = Solver(solver.bearing, Held(mask, values), solver.auto)
-    st = held.state(load, speed, state.displacement)
+    st = held.solve(load, speed, state.displacement)
     name = solver.bearing.name
     d, h = state.displacement, st.displacement
     msg = (f"bearing {name!r}: the free inner ring tilts {tilt * 1e3:.3g} mrad under {_load_label(load)} at "
@@ -262,7 +262,7 @@ def run(section) -> BallRun:
     if sw.speed_rpm is not None:
         vals = np.linspace(sw.speed_rpm.start, sw.speed_rpm.stop, sw.speed_rpm.count)
         sweeps["speed"] = speed_sweep(solver, vals * RPM, load)
-    state = solver.state(load, speed)
+    state = solver.solve(load, speed)
     tc = tilt_check(solver, state, load, speed)
     if tc is not None:
         log.warning("%s", tc.message)

@@ -63,9 +63,9 @@ def heat(bearing, speed: float, static_load, lubrication: Lubrication, lubricant
     """The set's heat at the operating point (module note): its state at ``displacement`` when given (the
     rotor's static state has it), else under ``static_load``."""
     if displacement is not None:
-        state = bearing.state_at(np.asarray(displacement, float)[:5], speed)
+        state = bearing.at(np.asarray(displacement, float)[:5], speed)
     else:
-        state = bearing.state(np.zeros(5) if static_load is None else np.asarray(static_load, float), speed)
+        state = bearing.solve(np.zeros(5) if static_load is None else np.asarray(static_load, float), speed)
     options = ContactFrictionOptions(oil_volume_fraction=lubrication.oil_volume_fraction,
                                      starvation_K_rs=STARVATION_K_RS.get(lubrication.method, 0.0))
     h = ball_bearing_heat(state, bearing.geometry, lubrication.lubricant, lubricant_C, options, model=bearing.model)

@@ -11,7 +11,7 @@ reactions (36-40) and the analytic 5x5 stiffness.
 - ``contact``: line-contact law of eqs. 23-26, Hertz point contact for the rib (28-29).
 - ``roller_equilibrium``: the batched Newton solve of eqs. 33-35.
 - ``reactions``: eqs. 36-40 and the condensed stiffness.
-- ``bearing``: :class:`DtrbBearing` (reaction, stiffness, equilibrium, linearized).
+- ``bearing``: :class:`DtrbBearing` (reaction, stiffness, ``solve(load)`` and ``at(displacement)``, linearized).
 """
 
 from spindlesim.lazy import lazy_exports

@@ -74,5 +74,5 @@ def most_loaded_roller_pressure(geometry, state, nx: int = 64, ny: int = 256) ->
 def roller_pressure_under(bearing, static_load, speed_rad_s: float, nx: int = 64, ny: int = 256) -> RollerPressure:
     """:func:`most_loaded_roller_pressure` of a DTRB (``DtrbBearing``) under the static load the shaft puts
     on it (on its ``dof_names``) at ``speed_rad_s``."""
-    state = bearing.equilibrium(bearing.full_load(static_load), speed_rad_s)
+    state = bearing.solve(bearing.full_load(static_load), speed_rad_s)
     return most_loaded_roller_pressure(bearing.geometry, state, nx, ny)

@@ -1,4 +1,4 @@
-"""Seed 000's roller bearing with a flexible (segmented) outer race: a bearing with internal DOFs.
+"""Seed 000's roller bearing with a flexible (segmented) outer race: the model of a bearing with internal DOFs.
 
 Bodies (seed 000 sec. 2, Figs. 1-2); the shaft and inner race are the rotor node (x, y), which
 the rotor model carries (mass, damping, loads):
@@ -20,7 +20,8 @@ is conservative (tested: energy is constant with damping and friction off and th
 Contract coordinates: q = [x, y | dr_1..dr_N, q_race (3n)] with dr_j = r_j - (R_i + R_r) (a
 roller touching the centred inner race has dr = 0) and q_race the segment displacements from
 the reference ring, so every internal DOF starts at zero.  ``generalized_force`` below is the
-numpy reference of the compiled kernel (``flexible_race_kernel``), which the contract uses.
+numpy reference of the compiled kernel (``flexible_race_kernel``), which the contract
+(``bearing.FlexibleRaceBearing``) uses.
 """
 
 from __future__ import annotations
@@ -30,17 +31,11 @@ from functools import cached_property
 
 import numpy as np
 
-from ..base import RADIAL, BearingBase, CompiledForce, shaft_angle
-from ..statics import equilibrium_under_load
+from ..base import RADIAL
 from .contact_force import CompliantContact
 from .contact_search import outer_race_contact
 from .kinematics import CageKinematics
 from .outer_race import SegmentedRing
-
-#: kernel number of this family in ``bearings.compiled``
-KIND = 3
-#: cage positions over one pitch averaged by ``linearized``
-PITCH_POINTS = 4
 
 
 @dataclass(frozen=True)
@@ -81,8 +76,9 @@ class HousingSupport:
 
 
 @dataclass(frozen=True)
-class FlexibleRaceBearing(BearingBase):
-    """Seed 000's bearing as a rotor bearing with the rollers and race segments as internal DOFs."""
+class FlexibleRace:
+    """Seed 000's bearing with the rollers and race segments as internal DOFs: the model and the numpy
+    reference of its force; the bearing contract is ``bearing.FlexibleRaceBearing``."""
 
     name: str
     node: int
@@ -129,10 +125,6 @@ class FlexibleRaceBearing(BearingBase):
     @property
     def n_pos(self) -> int:
         return 2 + self.rollers + 3 * self.ring.segments
-
-    def frequencies_hz(self, speed: float) -> dict[str, float]:
-        cage = self.kinematics.cage_ratio * speed / (2.0 * np.pi)
-        return {"cage": cage, "roller_pass": self.rollers * cage}
 
     def roller_angles(self, shaft_angle_rad: float) -> np.ndarray:
         N = self.rollers
@@ -246,138 +238,3 @@ class FlexibleRaceBearing(BearingBase):
         pe += 0.5 * self.housing.tangential_stiffness_N_m * float(np.sum(hs["slip"] ** 2))
         pe += 0.5 * self.housing.rocking_stiffness_Nm_rad * float(np.sum(hs["rocking"] ** 2))
         return pe
-
-    # the contract ----------------------------------------------------------------
-    @cached_property
-    def _packed(self):
-        from . import flexible_race_kernel as kernel
-
-        return kernel.pack(self)
-
-    def force(self, q, v, t: float = 0.0, speed: float = 0.0, angle=None) -> np.ndarray:
-        """Contract: the compiled force alone (the tangent is by differences of it)."""
-        return self._force(q, v, speed, shaft_angle(speed, t, angle))
-
-    def _force(self, q: np.ndarray, v: np.ndarray, speed: float, angle: float) -> np.ndarray:
-        """Compiled force on the contract coordinates."""
-        from . import flexible_race_kernel as kernel
-
-        fl, it = self._packed
-        out = np.empty(self.n_pos)
-        kernel.force(fl, it, np.ascontiguousarray(q, dtype=float), np.ascontiguousarray(v, dtype=float),
-                     speed, angle, out)
-        return out
-
-    def _steps(self) -> tuple[np.ndarray, np.ndarray]:
-        """Difference steps per DOF: 1e-10 m and 1e-8 rad; velocities 1e-6 m/s."""
-        N, n = self.rollers, self.ring.segments
-        dq = np.concatenate([[1e-10] * (2 + N), np.tile([1e-10, 1e-10, 1e-8], n)])
-        return dq, dq * 1e4
-
-    def force_and_tangent(self, q, v, t: float = 0.0, speed: float = 0.0, angle=None):
-        """Compiled force; K_t and C_t by central differences of it (the contract allows it)."""
-        a = shaft_angle(speed, t, angle)
-        q = np.asarray(q, float)
-        v = np.asarray(v, float)
-        f = self._force(q, v, speed, a)
-        dq, dv = self._steps()
-        n = q.size
-        K = np.empty((n, n))
-        C = np.empty((n, n))
-        for k in range(n):
-            e = np.zeros(n)
-            e[k] = dq[k]
-            K[:, k] = -(self._force(q + e, v, speed, a) - self._force(q - e, v, speed, a)) / (2 * dq[k])
-            e[k] = dv[k]
-            C[:, k] = -(self._force(q, v + e, speed, a) - self._force(q, v - e, speed, a)) / (2 * dv[k])
-        return f, K, C
-
-    def _condensed(self, q: np.ndarray, speed: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
-        """(node force, node stiffness) with the internal DOFs statically condensed (free rollers drop out)."""
-        f, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
-        Kii = K[2:, 2:]
-        return f[:2], K[:2, :2] - K[:2, 2:] @ np.linalg.pinv(Kii, rcond=1e-12) @ K[2:, :2]
-
-    def _internal_scale(self) -> np.ndarray:
-        return np.concatenate([[1e-7] * self.rollers, np.tile([1e-7, 1e-7, 1e-5], self.ring.segments)])
-
-    def held_node(self, q_node: np.ndarray, speed: float, angle: float, internal0: np.ndarray,
-                  force_scale: float = 1.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(node force, condensed node stiffness, internal DOFs) with the node held at ``q_node`` and
-        the rollers and race in equilibrium (quasi-static: their modes are ~100 kHz); the internal
-        forces are balanced to 1e-10 of ``force_scale`` (the bearing load) or their round-off floor."""
-        qn = np.asarray(q_node, float)[:2]
-        s = max(float(force_scale), 1.0)
-
-        def ft(z):
-            q = np.concatenate([qn, z])
-            f, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
-            return f[2:] / s, K[2:, 2:] / s
-
-        z = equilibrium_under_load(ft, np.zeros(1), internal0, self._internal_scale(), self.name, tol=1e-10)
-        f, K = self._condensed(np.concatenate([qn, z]), speed, angle)
-        return f, K, z
-
-    def static_displacement(self, speed: float, static_load=None, angle: float = 0.0) -> np.ndarray:
-        """Contract coordinates where the bearing alone carries ``static_load`` at a shaft angle."""
-        W = np.zeros(2) if static_load is None else np.asarray(static_load, float)[:2]
-        scale = np.concatenate([[1e-7] * 2, self._internal_scale()])
-
-        def ft(q):
-            f, K, _ = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
-            return f, K
-
-        return equilibrium_under_load(ft, W, np.zeros(self.n_pos), scale, self.name, tol=1e-8)
-
-    def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
-        """The tangent of the pitch-averaged reaction at the static state; C = 0 (the contract).
-
-        The node reaction with the rollers and race in equilibrium (condensed: their modes, ~100
-        kHz, are quasi-static for a rotor) is averaged over PITCH_POINTS cage positions of one
-        roller pitch; the static state is the node displacement at which that average carries
-        ``static_load`` (Newton on the two node DOFs), and K is the average of the condensed
-        tangents there: the derivative of the averaged reaction, as the rigid race's
-        ``pitch_average``.  (Averaging the tangents of each cage position's own equilibrium
-        instead differs by the variation of the equilibrium over the pitch: 12 % in K_xx for the
-        rotor of decks/validation/roller_rotor.yaml.)"""
-        W = np.zeros(2) if static_load is None else np.asarray(static_load, float)[:2]
-        pitch = 2.0 * np.pi / self.rollers / self.kinematics.cage_ratio
-        angles = pitch * np.arange(PITCH_POINTS) / PITCH_POINTS
-        starts = [self.static_displacement(speed, static_load, a) for a in angles]
-        qn = np.mean([s[:2] for s in starts], axis=0)
-        internal = [s[2:] for s in starts]
-        f_scale = max(float(np.max(np.abs(W))), 1.0)
-        previous = np.inf
-        for _ in range(30):
-            held = [self.held_node(qn, speed, a, z, f_scale) for a, z in zip(angles, internal)]
-            internal = [h[2] for h in held]
-            F = np.mean([h[0] for h in held], axis=0)
-            K = np.mean([h[1] for h in held], axis=0)
-            r = F + W
-            rn = float(np.max(np.abs(r)))
-            # converged, or stalled at the round-off floor of the internal equilibria
-            if rn <= 1e-10 * f_scale or (rn > 0.5 * previous and rn <= 1e-7 * f_scale):
-                break
-            previous = rn
-            qn = qn + np.linalg.solve(K, r)
-        else:
-            raise ArithmeticError(f"bearing {self.name!r}: the pitch-averaged reaction found no static state "
-                                  f"(residual {np.max(np.abs(r)):.3g} N)")
-        return K, np.zeros((2, 2))
-
-    def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
-        from . import flexible_race_kernel as kernel
-
-        fl, it = self._packed
-        a = shaft_angle(speed, t, angle)
-        qc, vc = np.ascontiguousarray(q, dtype=float), np.ascontiguousarray(v, dtype=float)
-        loads = np.empty(self.rollers)
-        kernel.outer_loads(fl, it, qc, vc, speed, a, loads)
-        Q = qc[2 + self.rollers:].reshape(-1, 3)
-        er = np.column_stack([np.cos(self.ring.phi), np.sin(self.ring.phi)])
-        return {"force": (self._force(qc, vc, speed, a)[:2], "N"), "roller_load_N": (loads, "N"),
-                "race_deflection_m": (np.sum(Q[:, 0:2] * er, axis=1), "m")}
-
-    def compiled(self) -> CompiledForce:
-        fl, it = self._packed
-        return CompiledForce(KIND, fl, it)

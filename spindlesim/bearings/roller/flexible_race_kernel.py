@@ -28,7 +28,7 @@ import numpy as np
 from numba import njit
 
 if TYPE_CHECKING:
-    from .flexible_race import FlexibleRaceBearing
+    from .bearing import FlexibleRaceBearing
 
 (CAGE_RATIO, SPIN_RATIO, R_INNER, R_ROLLER, R_RACE, R_MEAN, CHORD, ROLLER_MASS, CENTRIFUGAL, R_REF,
  C_K, C_M1, C_C, C_M2, C_M3, C_MU, C_VREG,

@@ -1,4 +1,5 @@
-"""Rolling bearing with rigid races: Hertz contacts at the cage positions (the bearing contract).
+"""Rolling bearing with rigid races: Hertz contacts at the cage positions (the model; its contract is
+``bearing.RigidRaceBearing``).
 
 Sunnersjo (J. Sound Vib. 58, 1978) and Harsha and Kankar (Int. J. Mech. Sci. 46, 2004, the
 waviness reference of seed 000): the races are rigid, the shaft centre (x, y) moves in the
@@ -21,16 +22,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..base import RADIAL, BearingBase, CompiledForce, shaft_angle
-from ..statics import equilibrium_under_load
+from ..base import RADIAL
 from .kinematics import CageKinematics
-from .load_distribution import static_load_distribution
 
-#: kernel number of this family in ``bearings.compiled``
-KIND = 2
-#: cage positions over one pitch averaged by ``linearized``
-PITCH_POINTS = 24
-_SURFACE = {"outer": 0, "inner": 1, "roller": 2}
+#: code of each waviness surface in the compiled force
+SURFACE = {"outer": 0, "inner": 1, "roller": 2}
 
 
 @dataclass(frozen=True)
@@ -49,15 +45,16 @@ class Waviness:
     phase_rad: float = 0.0
 
     def __post_init__(self) -> None:
-        if self.surface not in _SURFACE:
+        if self.surface not in SURFACE:
             raise ValueError(f"waviness surface must be inner, outer or roller, not {self.surface!r}")
         if self.waves < 1:
             raise ValueError("waviness needs at least one wave")
 
 
 @dataclass(frozen=True)
-class RigidRaceBearing(BearingBase):
-    """Rigid races and Hertz contacts (Sunnersjo 1978; Harsha and Kankar 2004); the bearing contract."""
+class RigidRace:
+    """Rigid races and Hertz contacts (Sunnersjo 1978; Harsha and Kankar 2004): the model; the bearing contract
+    is ``bearing.RigidRaceBearing``."""
 
     name: str
     node: int
@@ -77,10 +74,6 @@ class RigidRaceBearing(BearingBase):
             raise ValueError("contact stiffness and exponent must be positive")
 
     # kinematics ---------------------------------------------------------------
-    def frequencies_hz(self, speed: float) -> dict[str, float]:
-        cage = self.kinematics.cage_ratio * speed / (2.0 * np.pi)
-        return {"cage": cage, "roller_pass": self.rollers * cage}
-
     def angles(self, shaft_angle_rad: float) -> np.ndarray:
         """Orbit angle of each rolling element [rad] at a shaft angle."""
         return (self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
@@ -112,68 +105,6 @@ class RigidRaceBearing(BearingBase):
         """Contact load Q_j >= 0 of each rolling element [N]."""
         _, d = self.deflection_m(np.asarray(q, float), shaft_angle_rad)
         return self.stiffness * np.maximum(d, 0.0) ** self.exponent
-
-    # the contract -------------------------------------------------------------
-    def _at_angle(self, q: np.ndarray, angle: float) -> tuple[np.ndarray, np.ndarray]:
-        th, d = self.deflection_m(q, angle)
-        dp = np.maximum(d, 0.0)
-        Q = self.stiffness * dp ** self.exponent
-        k = self.stiffness * self.exponent * dp ** (self.exponent - 1.0)
-        c, s = np.cos(th), np.sin(th)
-        f = -np.array([Q @ c, Q @ s])
-        K = np.array([[k @ (c * c), k @ (c * s)], [k @ (c * s), k @ (s * s)]])
-        return f, K
-
-    def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
-        f, K = self._at_angle(np.asarray(q, float), shaft_angle(speed, t, angle))
-        return f, K, np.zeros((2, 2))
-
-    def _pitch_angles(self) -> np.ndarray:
-        """Shaft angles that move the cage evenly over one pitch (PITCH_POINTS points)."""
-        pitch = 2.0 * np.pi / self.rollers
-        return pitch * np.arange(PITCH_POINTS) / PITCH_POINTS / self.kinematics.cage_ratio
-
-    def pitch_average(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Force and tangent averaged over one roller pitch at a fixed displacement.
-
-        With waviness the reaction does not repeat every pitch; the average is then over the
-        same pitch positions with the waviness at shaft angle 0 + the cage travel, an
-        approximation stated in docs/theory.md."""
-        out = [self._at_angle(q, a) for a in self._pitch_angles()]
-        return np.mean([o[0] for o in out], axis=0), np.mean([o[1] for o in out], axis=0)
-
-    def static_displacement(self, speed: float = 0.0, static_load=None) -> np.ndarray:
-        """Displacement at which the pitch-averaged reaction carries ``static_load`` (x, y)."""
-        W = np.asarray(static_load if static_load is not None else np.zeros(2), float)[:2]
-        fr = float(np.hypot(*W))
-        if fr == 0.0:
-            return np.zeros(2)
-        dist = static_load_distribution(self.stiffness, self.exponent, self.rollers, fr,
-                                        2.0 * self.radial_clearance_m)
-        q0 = dist.displacement_m * W / fr
-        scale = max(dist.displacement_m, 1e-9)
-        return equilibrium_under_load(self.pitch_average, W, q0, scale, self.name, max_step=scale)
-
-    def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
-        """The tangent at the static state averaged over one roller pitch; no damping."""
-        _, K = self.pitch_average(self.static_displacement(speed, static_load))
-        return K, np.zeros((2, 2))
-
-    def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
-        a = shaft_angle(speed, t, angle)
-        th, d = self.deflection_m(np.asarray(q, float)[:2], a)
-        Q = self.stiffness * np.maximum(d, 0.0) ** self.exponent
-        return {"force": (-np.array([Q @ np.cos(th), Q @ np.sin(th)]), "N"), "roller_load_N": (Q, "N")}
-
-    def compiled(self) -> CompiledForce:
-        """floats: [K, n, gamma0, cage ratio, spin ratio, cos base (N), sin base (N), waviness (4 per row)]."""
-        base = self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
-        wav = np.array([[_SURFACE[w.surface], w.waves, w.amplitude_m, w.phase_rad] for w in self.waviness],
-                       dtype=float).reshape(-1, 4)
-        k = self.kinematics
-        floats = np.concatenate([[self.stiffness, self.exponent, self.radial_clearance_m, k.cage_ratio,
-                                  k.spin_ratio], np.cos(base), np.sin(base), wav.ravel()])
-        return CompiledForce(KIND, floats, np.array([self.rollers, len(self.waviness)], np.int64))
 
     def potential_energy_J(self, q: np.ndarray, shaft_angle_rad: float) -> float:
         """Elastic energy sum K delta_+^(n+1)/(n+1) (conservative at zero speed)."""

@@ -1,18 +1,16 @@
-"""Deck keys of the cylindrical roller bearing of seed 000: ``type: roller`` and the rig section.
+"""Deck keys of the cylindrical roller bearing of seed 000 (``type: roller``) and its builder.
 
-``type: roller`` puts the bearing under any rotor (``bearings:`` list); its keys are those of
-the rig section's ``transient.bearing`` plus the number of rollers, the model and its parts:
+``type: roller`` puts the bearing under any rotor (``bearings:`` list); its keys are the bearing's
+geometry and materials (:class:`RollerGeometry`) plus the number of rollers, the model and its parts:
 
     bearings:
       - {type: roller, name: rear, node: 18, rollers: 12, model: rigid_race,
          inner_raceway_diameter_mm: 18.738, outer_raceway_diameter_mm: 28.262, roller_diameter_mm: 4.762,
          width_mm: 6.35, radial_clearance_mm: 0.0, waviness: [{surface: outer, waves: 8, amplitude_um: 0.5}]}
 
-The rig section ``transient:`` (issue 4) describes seed 000's 2-DOF test rig: a rigid journal of
-``shaft.mass_kg`` in this bearing under ``shaft.radial_load_N``; ``spindlesim.model.rig`` turns it
-into a rotor deck (journal + ``type: roller`` bearing) for the one transient engine.  Every key
-carries its unit; :func:`build` is the one place where they become SI.  Defaults are seed 000's
-bearing (Table 1) with the shaft mass of Harsha and Kankar (2004); see
+The rig section ``transient:`` of the transient analysis (``spindlesim.deck.transient``) describes
+seed 000's test rig with the same models.  Every key carries its unit; :func:`build` is the one
+place where they become SI.  Defaults are seed 000's bearing (Table 1); see
 ``spindlesim/decks/transient.yaml`` for the source of every number.
 
 Contact stiffness: ``contact_stiffness_N_per_m_n`` is the constant K of Q = K delta^n of a
@@ -35,13 +33,15 @@ from pydantic import Field, model_validator
 from ...fields import DeckModel, Fraction, NodeNumber, NonNegFloat, PositiveFloat
 
 if TYPE_CHECKING:
-    from .flexible_race import FlexibleRaceBearing
-    from .rigid_race import RigidRaceBearing
+    from .bearing import FlexibleRaceBearing, RigidRaceBearing
 
 Rollers = Annotated[int, Field(ge=3, le=100)]
 
 
-class TransientBearing(DeckModel):
+class RollerGeometry(DeckModel):
+    """Geometry, materials and contact law of the bearing (the rig's ``bearing:`` and every ``type: roller``
+    entry)."""
+
     inner_raceway_diameter_mm: PositiveFloat = 18.738
     """Diameter of the inner raceway."""
     outer_raceway_diameter_mm: PositiveFloat = 28.262
@@ -75,21 +75,12 @@ class TransientBearing(DeckModel):
     """Density of the outer race and of the rollers (flexible_race model)."""
 
 
-class TransientShaft(DeckModel):
-    mass_kg: PositiveFloat = 0.6
-    """Mass of the rigid journal (shaft) in the bearing."""
-    damping_Ns_mm: NonNegFloat = 0.2
-    """Viscous damping of the journal to ground in x and in y (in N s/mm: 1 N s/mm = 1000 N s/m)."""
-    radial_load_N: NonNegFloat = 6.0  # along -y (gravity direction)
-    """Constant radial load on the journal along -y (gravity direction)."""
-
-
-class TransientOuterRace(DeckModel):
+class RollerOuterRace(DeckModel):
     segments: Annotated[int, Field(ge=3, le=360)] = 12
     """Number of rigid segments of the flexible outer race (flexible_race model)."""
 
 
-class TransientContact(DeckModel):
+class RollerContact(DeckModel):
     """Eq. 30-31 parameters of the roller contacts (flexible_race model)."""
 
     damping_Ns_m2: NonNegFloat = 1.8e9  # c, with m2 = 1, m3 = 1
@@ -107,7 +98,7 @@ class TransientContact(DeckModel):
     v_reg^2)."""
 
 
-class TransientHousing(DeckModel):
+class RollerHousing(DeckModel):
     """Outer race on the housing bore (seed 000 "surface contact"), per metre of bore circumference.
 
     Each segment gets these times its arc on the housing radius, so the support does not change
@@ -131,7 +122,7 @@ class TransientHousing(DeckModel):
     point support without rocking stiffness."""
 
 
-class TransientWaviness(DeckModel):
+class RollerWaviness(DeckModel):
     surface: Literal["inner", "outer", "roller"]
     """Surface with the waviness: inner raceway, outer raceway or roller."""
     waves: Annotated[int, Field(ge=1, le=10_000)]
@@ -142,27 +133,7 @@ class TransientWaviness(DeckModel):
     """Phase of the waviness."""
 
 
-class TransientIntegrator(DeckModel):
-    # RK4: compiled fixed-step RK4 (default); the others are scipy's adaptive solve_ivp methods on the
-    # numpy right-hand side (slow: a cross-check).  step_us bounds the RK4 step (default: 1 us for the
-    # rigid race, the stability limit, at most 2 us, for the flexible race); rtol is for the adaptive methods
-    # (default 1e-7 rigid race, 1e-5 flexible race).
-    method: Literal["RK4", "RK45", "DOP853", "LSODA", "BDF", "Radau"] = "RK4"
-    """RK4: compiled fixed-step Runge-Kutta (default); RK45, DOP853, LSODA, BDF, Radau: scipy's adaptive methods
-    on the numpy right-hand side (slow: a cross-check)."""
-    step_us: Optional[PositiveFloat] = None
-    """Largest RK4 step. None: 1 us for the rigid race, the RK4 stability limit (at most 2 us) for the flexible
-    race."""
-    rtol: Optional[Annotated[float, Field(gt=0, lt=1e-2)]] = None
-    """Relative tolerance of the adaptive methods. None: 1e-7 for the rigid race, 1e-5 for the flexible race."""
-    sample_rate_hz: Optional[PositiveFloat] = None
-    """Rate of the recorded samples. None: 50 samples per roller pass, at least 2 kHz (RK4 rounds it to a whole
-    number of samples per roller pass)."""
-    chunks: Annotated[int, Field(ge=1, le=100000)] = 40
-    """Pieces the run is integrated in; Ctrl-C between two keeps what was computed."""
-
-
-def _check_geometry(b: "TransientBearing", model: str) -> None:
+def check_geometry(b: "RollerGeometry", model: str) -> None:
     gap = b.outer_raceway_diameter_mm - b.inner_raceway_diameter_mm - 2 * b.roller_diameter_mm
     if gap < -1e-9:
         raise ValueError(f"rollers do not fit: outer - inner raceway diameter - 2 x roller diameter = {gap:.4g} mm")
@@ -174,7 +145,7 @@ def _check_geometry(b: "TransientBearing", model: str) -> None:
         raise ValueError("the flexible_race model is a roller bearing (seed 000); use rigid_race for balls")
 
 
-class RollerEntry(TransientBearing):
+class RollerEntry(RollerGeometry):
     """``type: roller`` in a rotor deck's ``bearings:`` list."""
 
     type: Literal["roller"]
@@ -189,18 +160,18 @@ class RollerEntry(TransientBearing):
     model: Literal["rigid_race", "flexible_race"] = "rigid_race"
     """rigid_race: rings rigid, roller contacts only (2 DOF); flexible_race: the outer race as rigid segments on
     the housing (seed 000)."""
-    outer_race: TransientOuterRace = TransientOuterRace()
+    outer_race: RollerOuterRace = RollerOuterRace()
     """The flexible outer race (flexible_race model)."""
-    contact: TransientContact = TransientContact()
+    contact: RollerContact = RollerContact()
     """Damping and friction of the roller contacts (flexible_race model)."""
-    housing: TransientHousing = TransientHousing()
+    housing: RollerHousing = RollerHousing()
     """Support of the outer race by the housing (flexible_race model)."""
-    waviness: Annotated[list[TransientWaviness], Field(max_length=64)] = []
+    waviness: Annotated[list[RollerWaviness], Field(max_length=64)] = []
     """Surface waviness of the raceways or rollers (rigid_race model only)."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "RollerEntry":
-        _check_geometry(self, self.model)
+        check_geometry(self, self.model)
         if self.model == "flexible_race" and self.waviness:
             raise ValueError("waviness is modelled in the rigid_race model only")
         return self
@@ -222,14 +193,15 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
         K_total = float(e.contact_stiffness_N_per_m_n or palmgren_stiffness(e.width_mm * 1e-3))
     r_out_mm = 0.5 * e.outer_raceway_diameter_mm + e.radial_clearance_mm  # clearance enlarges the outer raceway
     if e.model == "rigid_race":
-        from .rigid_race import RigidRaceBearing, Waviness
+        from .bearing import RigidRaceBearing, Waviness
 
         kin = CageKinematics(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
                              e.roller_diameter_mm * 1e-3, e.slip_inner, e.slip_outer)
         wav = tuple(Waviness(w.surface, w.waves, w.amplitude_um * 1e-6, np.radians(w.phase_deg)) for w in e.waviness)
         return RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, e.radial_clearance_mm * 1e-3, wav)
     from .contact_force import CompliantContact
-    from .flexible_race import FlexibleRaceBearing, HousingSupport
+    from .bearing import FlexibleRaceBearing
+    from .flexible_race import HousingSupport
     from .outer_race import SegmentedRing
 
     r_out, r_h = r_out_mm * 1e-3, e.housing_radius_mm * 1e-3
@@ -247,43 +219,3 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
     support = HousingSupport(hc, 0.0, h.tangential_stiffness_N_m2 * arc,
                              rocking_arc_m=arc if h.surface_contact else 0.0)
     return FlexibleRaceBearing(e.name, node, kin, e.rollers, ring, rc, support, e.width_mm * 1e-3, e.density_kg_m3)
-
-
-class TransientSection(DeckModel):
-    """The rig section ``transient:``: seed 000's 2-DOF test rig (rigid journal in the bearing)."""
-
-    model: Literal["flexible_race", "rigid_race"] = "flexible_race"
-    """flexible_race: seed 000's segmented flexible outer race; rigid_race: rigid rings, 2 DOF (Harsha and
-    Kankar, Sunnersjo). `spindlesim transient --model` overrides it."""
-    rollers: Rollers = 8
-    """Number of rollers (`--rollers` overrides it)."""
-    duration_s: PositiveFloat = 0.3
-    """Simulated time (`--duration` overrides it)."""
-    settle_s: Optional[NonNegFloat] = None
-    """Start of the steady part used for the spectrum and the Poincare map; shorter than `duration_s`. None: 40
-    % of the run."""
-    speed_rpm: NonNegFloat = 5000.0
-    """Speed of the inner ring (the journal)."""
-    bearing: TransientBearing = TransientBearing()
-    """The bearing's geometry and material."""
-    shaft: TransientShaft = TransientShaft()
-    """The rigid journal: mass, damping and load."""
-    outer_race: TransientOuterRace = TransientOuterRace()
-    """The flexible outer race (flexible_race model)."""
-    contact: TransientContact = TransientContact()
-    """Damping and friction of the roller contacts (flexible_race model)."""
-    housing: TransientHousing = TransientHousing()
-    """Support of the outer race by the housing (flexible_race model)."""
-    waviness: Annotated[list[TransientWaviness], Field(max_length=64)] = []
-    """Surface waviness of the raceways or rollers (rigid_race model only)."""
-    integrator: TransientIntegrator = TransientIntegrator()
-    """Time integration settings."""
-
-    @model_validator(mode="after")
-    def _consistent(self) -> "TransientSection":
-        _check_geometry(self.bearing, self.model)
-        if self.settle_s is not None and self.settle_s >= self.duration_s:
-            raise ValueError("settle_s must be shorter than duration_s")
-        if self.model == "flexible_race" and self.waviness:
-            raise ValueError("waviness is modelled in the rigid_race model only")
-        return self
