@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from spindlesim.bearings.dtrb.bearing import DtrbBearing
-from spindlesim.bearings.dtrb.section import DtrbMaterial, DtrbTemperatures, at_deck_temperatures, geometry_from
+from spindlesim.bearings.dtrb.section import DtrbMaterial, at_deck_temperatures, geometry_from
+from spindlesim.bearings.temperatures import PartTemperatures as DtrbTemperatures
 from spindlesim.deck import default_deck
 from spindlesim.thermal.growth import BEARING_STEEL
 from spindlesim.thermal.growth_bearings import BearingTemperatures, dtrb_preload_change
@@ -75,3 +76,24 @@ def test_rotor_entry_takes_the_temperatures():
     warm = [b for b in build_rotor(parse_deck(yaml.safe_dump(d), "b.yaml").deck).bearings if b.name == entry["name"]][0]
     ref = dtrb_preload_change(cold.geometry, BearingTemperatures(40.0, 30.0, 35.0), BEARING_STEEL).preload_change_m
     assert warm.preload_m == pytest.approx(cold.preload_m + ref, rel=1e-12)
+
+
+def test_cylindrical_roller_entry_takes_its_clearance_from_the_temperatures():
+    """A `type: roller` entry with `temperatures_C` gets the radial clearance of its grown parts: by hand,
+    P_d' = P_d + d_o a (T_o - T0) - d_i a (T_i - T0) - 2 D_w a (T_w - T0) (free rings), the entry's radial
+    clearance being half the diametral one: inner ring 50 C, rollers 40 C, outer ring 30 C take the seed
+    000 bearing's 10 um radial clearance to 7.30 um."""
+    from spindlesim.bearings.roller.section import RollerEntry, build, operating_clearance_mm
+
+    base = dict(type="roller", name="r", node=1, radial_clearance_mm=0.010)
+    e = RollerEntry.model_validate(base | {"temperatures_C": {"inner_ring": 50.0, "outer_ring": 30.0,
+                                                             "rolling_elements": 40.0}})
+    a, di, do, dw = 11.5e-6, e.inner_raceway_diameter_mm, e.outer_raceway_diameter_mm, e.roller_diameter_mm
+    by_hand = 0.010 + 0.5 * (do * a * 10.0 - di * a * 30.0 - 2 * dw * a * 20.0)
+    assert operating_clearance_mm(e) == pytest.approx(by_hand, rel=1e-12)
+    assert operating_clearance_mm(RollerEntry.model_validate(base)) == 0.010
+    uniform = RollerEntry.model_validate(base | {"temperatures_C": {"inner_ring": 60.0, "outer_ring": 60.0,
+                                                                   "rolling_elements": 60.0}})
+    grown_gap = 0.5 * (do - di - 2 * dw) * a * 40.0  # a uniform growth scales the raceway gap as well
+    assert operating_clearance_mm(uniform) == pytest.approx(0.010 + grown_gap, rel=1e-9)
+    assert build(e).radial_clearance_m == pytest.approx(by_hand * 1e-3, rel=1e-12)

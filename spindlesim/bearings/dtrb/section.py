@@ -40,6 +40,7 @@ from typing import Annotated, Literal, Optional
 from pydantic import Field, model_validator
 
 from ...fields import AnyNumber, DeckModel, Load5, NodeNumber, PositiveFloat
+from ..temperatures import Expansion, PartTemperatures, body
 
 Count = Annotated[int, Field(ge=2, le=2000)]
 MAX_POLAR = 16
@@ -52,24 +53,9 @@ class DtrbMaterial(DeckModel):
     """Poisson's ratio (dimensionless)."""
     density_kg_m3: PositiveFloat = 7850.0
     """Density of the rollers (centrifugal force)."""
-    thermal_expansion_1_K: Optional[Annotated[float, Field(gt=0.0, le=1e-4)]] = None
+    thermal_expansion_1_K: Expansion = None
     """Linear expansion coefficient of rings and rollers [1/K] (`temperatures_C`). None: bearing steel's
     11.5e-6."""
-
-
-class DtrbTemperatures(DeckModel):
-    """Prescribed uniform temperatures of the parts [C]: the bearing is computed with the preload delta0 its
-    growth gives (cones and cup grow about the bearing centre, the rollers about their mass centres; a
-    uniform temperature changes nothing)."""
-
-    inner_ring: Annotated[float, Field(gt=-273.15, le=2000.0)]
-    """Uniform temperature of the cones [C]."""
-    outer_ring: Annotated[float, Field(gt=-273.15, le=2000.0)]
-    """Uniform temperature of the cup [C]."""
-    rolling_elements: Annotated[float, Field(gt=-273.15, le=2000.0)]
-    """Uniform temperature of the rollers [C]."""
-    reference: Annotated[float, Field(gt=-273.15, le=2000.0)] = 20.0
-    """Temperature [C] at which the geometry and the preload are given (the cold assembly)."""
 
 
 class DtrbGeometrySpec(DeckModel):
@@ -131,7 +117,7 @@ class DtrbSection(DeckModel):
     preload_um: Annotated[float, Field(ge=0.0)] = 30.0
     """Preload delta0 of each row (seed 001 eq. 10): each cone is pushed towards the bearing centre by delta0
     beyond first contact (total axial interference 2 delta0)."""
-    temperatures_C: Optional[DtrbTemperatures] = None
+    temperatures_C: Optional[PartTemperatures] = None
     """Temperatures of cones, cup and rollers: the bearing at the preload its growth gives; the preload sweep
     and polar preloads are shifted by the same change (dtrb.h5 holds the operating preloads). None: as
     assembled."""
@@ -171,7 +157,7 @@ class DtrbBearingEntry(DeckModel):
     """Geometry of the bearing (the keys of `dtrb.bearing`)."""
     preload_um: Annotated[float, Field(ge=0.0)] = 0.0
     """Preload delta0 of each row (seed 001 eq. 10): each cone pushed towards the bearing centre by delta0."""
-    temperatures_C: Optional[DtrbTemperatures] = None
+    temperatures_C: Optional[PartTemperatures] = None
     """Temperatures of cones, cup and rollers: the bearing at the preload its growth gives. None: as
     assembled."""
     axial_load_N: float = 0.0
@@ -208,14 +194,9 @@ def build(entry: DtrbBearingEntry):
     return at_deck_temperatures(b, entry.temperatures_C, entry.geometry.material)
 
 
-def at_deck_temperatures(bearing, temps: "DtrbTemperatures | None", material: DtrbMaterial):
+def at_deck_temperatures(bearing, temps: "PartTemperatures | None", material: DtrbMaterial):
     """``bearing`` at the deck's prescribed temperatures (itself without them)."""
     if temps is None:
         return bearing
-    from ...thermal.growth import BEARING_STEEL, ThermoElastic
-    from ...thermal.growth_bearings import BearingTemperatures
-
-    alpha = BEARING_STEEL.expansion_1_K if material.thermal_expansion_1_K is None else material.thermal_expansion_1_K
-    body = ThermoElastic(1e9 * material.E_GPa, material.poisson, material.density_kg_m3, alpha)
-    return bearing.at_temperatures(BearingTemperatures(temps.inner_ring, temps.outer_ring, temps.rolling_elements,
-                                                       temps.reference), body)
+    return bearing.at_temperatures(temps.si(), body(1e9 * material.E_GPa, material.poisson, material.density_kg_m3,
+                                                    material.thermal_expansion_1_K))

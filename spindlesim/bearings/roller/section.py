@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Annotated, Literal, Optional, Union
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Fraction, NodeNumber, NonNegFloat, PositiveFloat
+from ..temperatures import Expansion, PartTemperatures, body
 
 if TYPE_CHECKING:
     from .bearing import FlexibleRaceBearing, RigidRaceBearing
@@ -168,6 +169,12 @@ class RollerEntry(RollerGeometry):
     """Support of the outer race by the housing (flexible_race model)."""
     waviness: Annotated[list[RollerWaviness], Field(max_length=64)] = []
     """Surface waviness of the raceways or rollers (rigid_race model only)."""
+    temperatures_C: Optional[PartTemperatures] = None
+    """Temperatures of the rings and rollers: the bearing at the radial clearance their growth gives, half of
+    d_o' - d_i' - 2 D_w' (below zero: the rollers preloaded). None: as assembled."""
+    thermal_expansion_1_K: Expansion = None
+    """Linear expansion coefficient of rings and rollers [1/K] (`temperatures_C`). None: bearing steel's
+    11.5e-6."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "RollerEntry":
@@ -175,6 +182,19 @@ class RollerEntry(RollerGeometry):
         if self.model == "flexible_race" and self.waviness:
             raise ValueError("waviness is modelled in the rigid_race model only")
         return self
+
+
+def operating_clearance_mm(e: RollerEntry) -> float:
+    """The entry's radial clearance, at ``temperatures_C`` when given: plus half the change of the
+    diametral clearance d_o' - d_i' - 2 D_w' (``thermal.growth_bearings.roller_operating_clearance``)."""
+    if e.temperatures_C is None:
+        return e.radial_clearance_mm
+    from ...thermal.growth_bearings import roller_operating_clearance
+
+    grown = roller_operating_clearance(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
+                                       e.roller_diameter_mm * 1e-3, e.temperatures_C.si(),
+                                       body(e.E_GPa * 1e9, 0.3, e.density_kg_m3, e.thermal_expansion_1_K))  # free rings: E, nu unused
+    return e.radial_clearance_mm + 0.5e3 * grown.change_m
 
 
 def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
@@ -191,14 +211,15 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
         n = EXPONENT_LINE
         # Palmgren's law taken as the constant of the element's two contacts in series (module note)
         K_total = float(e.contact_stiffness_N_per_m_n or palmgren_stiffness(e.width_mm * 1e-3))
-    r_out_mm = 0.5 * e.outer_raceway_diameter_mm + e.radial_clearance_mm  # clearance enlarges the outer raceway
+    clearance_mm = operating_clearance_mm(e)
+    r_out_mm = 0.5 * e.outer_raceway_diameter_mm + clearance_mm  # clearance enlarges the outer raceway
     if e.model == "rigid_race":
         from .bearing import RigidRaceBearing, Waviness
 
         kin = CageKinematics(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
                              e.roller_diameter_mm * 1e-3, e.slip_inner, e.slip_outer)
         wav = tuple(Waviness(w.surface, w.waves, w.amplitude_um * 1e-6, np.radians(w.phase_deg)) for w in e.waviness)
-        return RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, e.radial_clearance_mm * 1e-3, wav)
+        return RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, clearance_mm * 1e-3, wav)
     from .contact_force import CompliantContact
     from .bearing import FlexibleRaceBearing
     from .flexible_race import HousingSupport
