@@ -104,21 +104,21 @@ class OperatingPoints:
         return ts
 
     def _thermal_start(self, rpm: float):
-        """Where the loop at ``rpm`` starts: the nearest speed solved, its temperatures extrapolated linearly
-        from the next nearest on the same side (a sweep's passes fall from about 7 to 4 a speed; the
-        equilibrium is the same to the loop's tolerance)."""
+        """Where the loop at ``rpm`` starts: the nearest speed solved, its temperatures extrapolated to ``rpm``
+        through it and the next nearest on the same side (a parabola through three where they exist, within
+        one spacing of the nearest; a sweep's passes fall from about 7 to 3 a speed; the equilibrium is the
+        same to the loop's tolerance)."""
         solved = sorted(self._thermal_states, key=lambda s: abs(s - rpm))
         if not solved:
             return None
         near = self._thermal_states[solved[0]]
-        side = [s for s in solved[1:] if (s - solved[0]) * (solved[0] - rpm) > 0]
-        if not side:
+        side = [s for s in solved[1:] if (s - solved[0]) * (solved[0] - rpm) > 0][:2]
+        if not side or not 0.0 < (rpm - solved[0]) / (solved[0] - side[0]) <= 1.0:
             return near
-        far = self._thermal_states[side[0]]
-        t = (rpm - solved[0]) / (solved[0] - side[0])
-        if not 0.0 < t <= 1.0:
-            return near
-        T = {n: v + t * (v - far.temperatures_C[n]) for n, v in near.temperatures_C.items()}
+        xs = [solved[0]] + side
+        weights = [np.prod([(rpm - xj) / (xi - xj) for xj in xs if xj != xi]) for xi in xs]  # Lagrange
+        states = [self._thermal_states[x] for x in xs]
+        T = {n: sum(w * st.temperatures_C[n] for w, st in zip(weights, states)) for n in near.temperatures_C}
         return dataclasses.replace(near, temperatures_C=T)
 
     def along(self, speeds_rpm, tick: Callable[[], None] | None = None,
