@@ -18,6 +18,7 @@ from typing import Callable
 import numpy as np
 
 from .result import Plan
+from .steadiness import first_order_matrix
 
 
 def plan_steps(duration_s: float, max_step_s: float, sample_rate_hz: float, pass_frequency_hz: float
@@ -46,11 +47,6 @@ def stability_step_s(M: np.ndarray, K: np.ndarray, C: np.ndarray, margin: float 
     negative real axis (Hairer and Wanner, Solving ODEs II, sec. IV.2); margin 2 keeps a lightly
     damped stiff mode at |R| about 0.75 per step.
     """
-    n = M.shape[0]
-    MiK, MiC = np.split(np.linalg.solve(M, np.hstack([K, C])), 2, axis=1)
-    A = np.zeros((2 * n, 2 * n))
-    A[:n, n:] = np.eye(n)
-    A[n:, :n] = -MiK
-    A[n:, n:] = -MiC
-    rho = float(np.max(np.abs(np.linalg.eigvals(A))))
+    rho = float(np.max(np.abs(np.linalg.eigvals(first_order_matrix(M, K, C)))))
     return margin / rho if rho > 0 else np.inf
+

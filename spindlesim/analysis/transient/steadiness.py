@@ -151,15 +151,21 @@ class LinearModes:
         return self.decay_rate_1_s / np.maximum(np.hypot(w, self.decay_rate_1_s), 1e-300)
 
 
-def linear_modes(M: np.ndarray, K: np.ndarray, C: np.ndarray) -> LinearModes:
-    """Oscillating modes (one of each conjugate pair) of M x'' + C x' + K x = 0."""
+def first_order_matrix(M: np.ndarray, K: np.ndarray, C: np.ndarray) -> np.ndarray:
+    """A = [[0, I], [-M^-1 K, -M^-1 C]] of M x'' + C x' + K x = 0 (general M: the transient's matrices,
+    constrained or reduced; ``analysis.modal.first_order`` is the rotor's, with M symmetric positive)."""
     n = M.shape[0]
     MiK, MiC = np.split(np.linalg.solve(M, np.hstack([K, C])), 2, axis=1)
     A = np.zeros((2 * n, 2 * n))
     A[:n, n:] = np.eye(n)
     A[n:, :n] = -MiK
     A[n:, n:] = -MiC
-    lam = np.linalg.eigvals(A)
+    return A
+
+
+def linear_modes(M: np.ndarray, K: np.ndarray, C: np.ndarray) -> LinearModes:
+    """Oscillating modes (one of each conjugate pair) of M x'' + C x' + K x = 0."""
+    lam = np.linalg.eigvals(first_order_matrix(M, K, C))
     lam = lam[lam.imag > 1e-9 * np.maximum(np.abs(lam), 1.0)]
     return LinearModes(lam.imag / (2 * np.pi), -lam.real)
 
