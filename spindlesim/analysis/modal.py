@@ -27,6 +27,8 @@ from .results import ModalResult
 RIGID_BODY_RAD_S = 1e-3 * 2 * np.pi  # roots below 1 mHz are rigid-body roots
 OVERDAMPED_ZETA = 0.999  # damping ratio at or above this: reported with the overdamped roots
 AXIAL_SHARE = 0.1  # largest lateral translation below this share of the axial one: an axial mode
+#: |damping ratio| below this is an undamped mode: its computed damping is round-off (1e-16..1e-13 of |lambda|)
+UNDAMPED_BELOW = 1e-10
 
 
 def first_order(sysm: SystemMatrices, P: np.ndarray | None = None):
@@ -110,10 +112,14 @@ def modal_from_matrices(sysm: SystemMatrices, dofs, node_z_m: np.ndarray, n_mode
     whirls = ["axial" if ax else w for w, ax in zip(whirls, axial_mode)]
     shares = np.where(axial_mode, 0.5, shares)
     zeta = -lam_m.real / np.abs(lam_m)
+    # an undamped mode (an axial mode with no axial damping, a rotor without damping): its computed damping is
+    # the eigen-solver's round-off, of either sign; it is zero, not a stability verdict
+    lam_m = np.where(np.abs(zeta) < UNDAMPED_BELOW, 1j * lam_m.imag, lam_m)
+    zeta = np.where(np.abs(zeta) < UNDAMPED_BELOW, 0.0, zeta)
     return ModalResult(
         speed_rpm=speed_rpm, eigenvalues=lam_m, frequency_hz=lam_m.imag / (2 * np.pi),
         undamped_frequency_hz=np.abs(lam_m) / (2 * np.pi), damping_ratio=zeta,
-        log_dec=-2 * np.pi * lam_m.real / lam_m.imag, whirl=tuple(whirls),
+        log_dec=-2 * np.pi * lam_m.real / lam_m.imag + 0.0, whirl=tuple(whirls),  # + 0.0: no -0 of an undamped mode
         forward_fraction=np.array(shares, dtype=float), mode_shape=shapes, node_z_m=node_z_m,
         overdamped_roots=lam[real][np.argsort(-lam[real].real)], rigid_body_roots=lam[rigid], unstable=zeta < 0,
     )

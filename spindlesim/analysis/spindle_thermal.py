@@ -11,8 +11,9 @@ One loop (issue 22; seed 003 does it for a fluid film, eqs. 4-14), at a speed:
 
    (a common offset of every set moves the rotor rigidly and changes no load);
 3. the rotor's static equilibrium at the speed on those bearings (``operating.operating_state``);
-4. each bearing's heat at its operating point (``heat``: spin, rolling and drag of the balls, split to inner
-   ring, balls and outer ring) and the motor's losses;
+4. each bearing's heat at its operating point (``heat``: a ball set's spin, rolling and drag of the balls,
+   a roller bearing's Palmgren moment; split to inner ring, rolling elements and outer ring) and the motor's
+   losses;
 5. the network's steady state with these sources and the contact conductances of the bearings' loads.
 
 Repeated until no node's temperature changes by more than the tolerance (0.01 K by default).  When the heat
@@ -40,6 +41,7 @@ from ..fe.assembly import ShaftMatrices, assemble_shaft
 from ..model.rotor import Rotor
 from ..model.thermal import SpindleThermalModel
 from ..thermal.growth_bearings import BearingTemperatures
+from ..thermal.properties import PropertyRangeError
 from ..thermal.spindle_network import BearingContacts, BearingHeat, build_spindle_network
 from ..thermal.transient import StepProfile
 from .operating import RPM, OperatingState, operating_state
@@ -102,12 +104,16 @@ class SpindleThermal:
         self._z0 = float(rotor.node_z_m[0])
         self._tip_z = None if rotor.tool_tip is None else float(rotor.node_z_m[rotor.tool_tip]) - self._z0
         self._cache: dict = {}
+        #: each set's nodes: inner ring, rolling elements (balls or rollers), outer ring
+        self._parts = {b.name: (f"bearing:{b.name}:inner", b.elements_node, f"bearing:{b.name}:outer")
+                       for b in lay.bearings}
 
     # ---- temperatures -> bearings ------------------------------------------------------------------
     def parts(self, T: dict[str, float], name: str) -> BearingTemperatures:
         lay = self.model.layout
         z = next(b.position_m for b in lay.bearings if b.name == name)
-        return BearingTemperatures(T[f"bearing:{name}:inner"], T[f"bearing:{name}:outer"], T[f"bearing:{name}:balls"],
+        inner, elements, outer = self._parts[name]
+        return BearingTemperatures(T[inner], T[outer], T[elements],
                                    self.model.reference_C, T[f"shaft[{segment(self._s_edges, z)}]"],
                                    T[f"housing[{segment(self._h_edges, z)}]"])
 
@@ -143,7 +149,7 @@ class SpindleThermal:
         reports: dict[str, HeatReport] = {}
         for b, load, idx in zip(st.bearings, st.loads, st.bearing_index):
             if b.name in parts:
-                r = b.heat(om, load, self.model.lubrication, T[f"bearing:{b.name}:balls"], displacement=st.q[idx])
+                r = b.heat(om, load, self.model.lubrication, T[self._parts[b.name][1]], displacement=st.q[idx])
                 if r is not None:
                     reports[b.name] = r
         return st, parts, offsets, reports
@@ -181,11 +187,14 @@ class SpindleThermal:
                 st, parts, offsets, reports = self._pass(T, speed_rpm, st, linearize=False)
             except (ValueError, ArithmeticError) as exc:
                 raise self._runaway(speed_rpm, history, T, f"the bearings' equilibrium failed ({exc})") from exc
-            new = self._network_step(om, T, reports)
+            try:
+                new = self._network_step(om, T, reports)
+            except PropertyRangeError as exc:
+                raise self._runaway(speed_rpm, history, T, f"the network's fluids left their tables ({exc})") from exc
             change = max(abs(new[n] - T[n]) for n in self._names)
             history.append((it, {n: r.row_thrust_N for n, r in reports.items()}, max(new.values()), change))
             T = new
-            hottest = max(T[f"bearing:{n}:{p}"] for n in m.bearings for p in ("inner", "balls", "outer"))
+            hottest = max(T[p] for n in m.bearings for p in self._parts[n])
             if hottest > RUNAWAY_C:
                 raise self._runaway(speed_rpm, history, T, f"a bearing part reached {hottest:.0f} C")
             if len(history) >= 8 and all(h[3] >= history[-8][3] for h in history[-4:]):
@@ -245,7 +254,7 @@ class SpindleThermal:
         cache: dict = {}
 
         def bearing_heat(w, T, t):
-            key_T = np.array([T[f"bearing:{n}:{p}"] for n in m.bearings for p in ("inner", "balls", "outer")])
+            key_T = np.array([T[p] for n in m.bearings for p in self._parts[n]])
             last = cache.get("last")
             if (last is None or last[0] != w or float(np.max(np.abs(key_T - last[1]))) > REFRESH_K
                     or abs(t - last[3]) > REFRESH_S):
@@ -261,8 +270,13 @@ class SpindleThermal:
             return cache["last"][4]
 
         t_eval = np.linspace(0.0, duration_s, samples)
-        res = self.network.warm_up(prof, duration_s, bearing_heat, load_fraction=m.load_fraction, t_eval=t_eval,
-                                   update_K=0.1, contacts=contacts)
+        try:
+            res = self.network.warm_up(prof, duration_s, bearing_heat, load_fraction=m.load_fraction, t_eval=t_eval,
+                                       update_K=0.1, contacts=contacts)
+        except (PropertyRangeError, ThermalRunawayError, ArithmeticError, ValueError) as exc:
+            last = cache.get("last")
+            when = "" if last is None else f" at {last[3] / 60.0:.1f} min ({last[0] / RPM:g} rpm)"
+            raise ThermalRunawayError(f"the warm-up ran away{when}: {exc}") from exc
         out = []
         for k, t in enumerate(res.times_s):
             T = {n: float(res.temperatures_C[k, i]) for i, n in enumerate(self._names)}

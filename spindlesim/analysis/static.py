@@ -52,6 +52,7 @@ def solve_static(rotor: "Rotor | OperatingPoints", stiffness_node: int = 0, stif
         speed_rpm=st.speed_rad_s * 30 / np.pi, state=st,
         axial_displacement_m=_component(rotor, q, "z") if rotor.dofs.has("z") else None,
         applied_axial_force_N=float(axial), tool_tip_node=tip, tool_tip_stiffness_N_m=tip_k,
+        gravity_m_s2=float(rotor.gravity_m_s2),
     )
 
 

@@ -238,10 +238,14 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     if d.spindle_thermal is not None:
         if d.shaft is None:
             bad.append((("spindle_thermal",), "the spindle's thermal model needs a shaft (shaft: elements: ...)"))
-        balls = [(i, b) for i, b in enumerate(d.bearings) if b.type == "ball"]
-        if not balls:
-            bad.append((("spindle_thermal",), "the spindle's thermal model needs ball-bearing entries (type: ball)"))
-        for i, b in balls:
+        from ..thermal.section import network_bearings
+
+        sets, refused = network_bearings(d.bearings)
+        if not sets:
+            bad.append((("spindle_thermal",), "the spindle's thermal model needs rolling-bearing entries (type: ball, "
+                                              "dtrb or roller)"))
+        bad += [(("bearings", i, "model"), why) for i, _, why in refused]
+        for i, b in sets:
             if b.temperatures_C is not None:
                 bad.append((("bearings", i, "temperatures_C"), "prescribed temperatures and the spindle_thermal "
                                                                "section exclude each other: the section computes them"))

@@ -1,10 +1,18 @@
 """The deck's ``spindle_thermal:`` section and its rotor -> the SI thermal model of the spindle.
 
 The thermal network's shaft segments are the rotor's shaft elements (the tool and holder stay outside:
-their growth is taken at the nose temperature), its bearing sets the rotor's ball-bearing entries (bore and
-outside diameter from their `mounting` when given, else the usual proportions of an angular-contact
-bearing, d_m -+ 1.575 D_w: a 7014 has d 70, D 110, d_m 90, D_w 12.7), the housing, the cooling jacket
-and the motor the section's.  docs/theory.md, "Spindle thermal model".
+their growth is taken at the nose temperature), its bearing sets the rotor's rolling-bearing entries, the
+housing, the cooling jacket and the motor the section's.  Ring dimensions (they set the rings' heat
+capacity and seat areas) where the deck does not give them, our estimates from catalogue proportions:
+
+- ball set: bore and outside diameter from its `mounting` when given, else d_m -+ 1.575 D_w (a 7014 has
+  d 70, D 110, d_m 90, D_w 12.7); width 1.6 D_w a row, or the rows' spacing;
+- DTRB: d_m -+ 1.575 D (D the rollers' mean diameter: a 32010 has d 50, D 80, d_m about 65, D about 8.5),
+  width 2 x 1.25 l (two rows, cup and cone lands beside the rollers);
+- cylindrical roller bearing: inner raceway diameter - 0.9 D_w, outer raceway diameter + 0.9 D_w (an N 1010
+  has d 50, F 57.5, E 72.5, D 80), width 1.5 x the roller length.
+
+docs/theory.md, "Spindle thermal model".
 """
 
 from __future__ import annotations
@@ -20,6 +28,7 @@ from ..thermal.friction import Lubricant
 from ..thermal.layout import (STEEL, BearingSet, CoolingJacket, HousingSegment, MotorLayout, ShaftSegment, Solid,
                               SpindleLayout)
 from ..thermal.motor import MotorRating
+from ..thermal.section import network_bearings
 from .rotor import Rotor
 
 RPM = math.pi / 30.0
@@ -51,7 +60,7 @@ class SpindleThermalModel:
     housing_expansion_1_K: float
     load_fraction: float
     tolerance_K: float
-    bearings: tuple[str, ...]  # the ball-bearing sets in the network, by name
+    bearings: tuple[str, ...]  # the rolling-bearing sets in the network, by name
     analyses: str  # "none" | "steady"
     speeds_rpm: tuple[float, ...]
     warm_up: WarmUpProfile | None = None
@@ -75,7 +84,7 @@ def build_spindle_thermal(deck: Any, rotor: Rotor) -> SpindleThermalModel | None
     mat = h.material
     housing_solid = Solid(mat.conductivity_W_mK, mat.density_kg_m3, mat.specific_heat_J_kgK)
     housing = tuple(HousingSegment(r[2] * mm, r[0] * mm, r[1] * mm) for r in h.segments)
-    sets = tuple(_bearing_set(e, float(rotor.node_z_m[e.node - 1]) - z0) for e in deck.bearings if e.type == "ball")
+    sets = tuple(_SETS[e.type](e, float(rotor.node_z_m[e.node - 1]) - z0) for _, e in network_bearings(deck.bearings)[0])
     jacket = None
     if sec.cooling_jacket is not None:
         j = sec.cooling_jacket
@@ -126,3 +135,31 @@ def _bearing_set(e: Any, z_m: float) -> BearingSet:
                       e.inner_conformity, e.outer_conformity, ring=STEEL, ball=SILICON_NITRIDE if ceramic else STEEL,
                       ring_E_Pa=e.material.E_GPa * 1e9, ring_poisson=e.material.poisson,
                       ball_E_Pa=bm.E_GPa * 1e9, ball_poisson=bm.poisson)
+
+
+def _dtrb_set(e: Any, z_m: float) -> BearingSet:
+    """The thermal network's set of a DTRB entry centred at ``z_m``: both rows' rollers (module note)."""
+    from ..bearings.dtrb.section import geometry_from
+
+    g = geometry_from(e.geometry)
+    d_mean = 2.0 * (g.large_end_radius_m - 0.5 * g.roller_length_m * math.tan(g.roller_half_angle_rad))
+    dm = g.pitch_diameter_m
+    mat = e.geometry.material
+    return BearingSet(e.name, z_m, dm - RING_PROPORTION * d_mean, dm + RING_PROPORTION * d_mean,
+                      2 * 1.25 * g.roller_length_m, 2 * g.rollers_per_row, d_mean, dm, g.cup_angle_rad, 100.0,
+                      ring=STEEL, ball=STEEL, ring_E_Pa=mat.E_GPa * 1e9, ring_poisson=mat.poisson,
+                      ball_E_Pa=mat.E_GPa * 1e9, ball_poisson=mat.poisson, element="roller",
+                      roller_length_m=g.roller_length_m)
+
+
+def _roller_set(e: Any, z_m: float) -> BearingSet:
+    """The thermal network's set of a cylindrical roller entry centred at ``z_m`` (module note)."""
+    mm = 1e-3
+    D, L = e.roller_diameter_mm * mm, e.width_mm * mm
+    di, do = e.inner_raceway_diameter_mm * mm, e.outer_raceway_diameter_mm * mm
+    return BearingSet(e.name, z_m, di - 0.9 * D, do + 0.9 * D, 1.5 * L, e.rollers, D, 0.5 * (di + do), 0.0, 100.0,
+                      ring=STEEL, ball=STEEL, ring_E_Pa=e.E_GPa * 1e9, ball_E_Pa=e.E_GPa * 1e9, element="roller",
+                      roller_length_m=L)
+
+
+_SETS = {"ball": _bearing_set, "dtrb": _dtrb_set, "roller": _roller_set}

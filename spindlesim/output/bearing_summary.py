@@ -41,8 +41,8 @@ def _spindle_thermal(f):
                      f"{a['lubrication']}, motor load {float(a['motor_load_fraction']):g}")
         for i, s in enumerate(sp):
             motor = sum(heat[i, k] for k, n in enumerate(sources) if n.startswith("motor"))
-            parts = [f"{n} {heat[i, sources.index('bearing:' + n)]:.0f} W, rings {inner[i, j]:.1f}/{outer[i, j]:.1f} C, "
-                     f"preload {np.nanmax(thrust[i, j]):.0f} N" for j, n in enumerate(names) if f"bearing:{n}" in sources]
+            parts = [f"{n} {heat[i, sources.index('bearing:' + n)]:.0f} W, rings {inner[i, j]:.1f}/{outer[i, j]:.1f} C"
+                     + _preload(thrust[i, j]) for j, n in enumerate(names) if f"bearing:{n}" in sources]
             tip = "" if not np.isfinite(drift[i]) else f"; tool tip {drift[i] * 1e6:+.1f} um axially"
             lines.append(f"  {s:7.0f} rpm: motor {motor:.0f} W; " + "; ".join(parts) + tip)
         data.update(speed_rpm=sp.tolist(), heat_W=heat.tolist(), tool_tip_axial_drift_m=drift.tolist())
@@ -197,3 +197,9 @@ def contact(f):
              f"approach {float(a['approach_m']) * 1e6:.4g} um"
              + ("; EDGE STRESS (pressure singular at the roller end)" if a.get("edge_singular") else "")]
     return lines, {"max_pressure_Pa": p, "area_m2": area, "approach_m": float(a["approach_m"])}
+
+
+def _preload(row_thrust) -> str:
+    """", preload N N" of a bearing's rows' thrust; nothing for a bearing without one (a cylindrical roller)."""
+    t = np.asarray(row_thrust, float)
+    return f", preload {np.nanmax(t):.0f} N" if np.isfinite(t).any() else ""

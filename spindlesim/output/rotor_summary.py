@@ -15,6 +15,11 @@ from .numbers import clean, g as _g
 from .summary import scalar
 
 
+#: references of the noise floor when nothing loads the rotor: 1e-9 of them (1 pm, 1 uN) print 0
+ABSOLUTE_M = 1e-3
+ABSOLUTE_N = 1e3
+
+
 def static(f):
     g = f["static"]
     a = g.attrs
@@ -23,9 +28,12 @@ def static(f):
     load = f"Fx {_g(F[0])} N, Fy {_g(F[1])} N"
     if "applied_axial_force_N" in g:
         load += f", Fz {_g(scalar(g['applied_axial_force_N'][()]))} N"
-    lines.append(f"at {data['speed_rpm']:g} rpm under the applied loads (gravity included): {load}")
+    grav = a.get("gravity_m_s2")
+    what = "" if grav is None else (f", gravity {scalar(grav):g} m/s2 included" if scalar(grav) else ", no gravity")
+    lines.append(f"at {data['speed_rpm']:g} rpm under the applied loads{what}: {load}")
     data["applied_force_N"] = F.tolist()
-    noise = float(np.max(np.abs(g["displacement_m"][:]), initial=0.0))  # deflections below its noise: 0
+    # deflections below 1e-9 of the largest (and below 1 pm, when nothing loads the rotor) print 0
+    noise = max(float(np.max(np.abs(g["displacement_m"][:]), initial=0.0)), ABSOLUTE_M)
     if "static_stiffness_N_m" in g:
         k = scalar(g["static_stiffness_N_m"][()])
         node, dof = int(a["stiffness_node"]), str(a["stiffness_dof"])
@@ -45,7 +53,8 @@ def static(f):
     names = [str(n) for n in g["bearing_name"][:].astype(str)]
     forces = g["bearing_force_N"][:]
     data["bearing_force_N"] = {n: fb.tolist() for n, fb in zip(names, forces)}
-    shown = clean(forces, max(float(np.max(np.abs(forces), initial=0.0)), float(np.max(np.abs(F), initial=0.0))))
+    shown = clean(forces, max(float(np.max(np.abs(forces), initial=0.0)), float(np.max(np.abs(F), initial=0.0)),
+                              ABSOLUTE_N))
     for n, fb in zip(names, shown):  # below the noise of the largest force: 0
         lines.append(f"  bearing {n:12s} reaction " + ", ".join(f"{_g(v):>10s}" for v in np.ravel(fb)[:5]) + " N")
     return lines, data

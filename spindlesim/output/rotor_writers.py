@@ -29,13 +29,13 @@ def write_static(path: Path, run: RunInfo, r: StaticResult) -> Path:
         f"{g}/bearing_node": (r.bearing_nodes + 1, "1", ("bearing_name",)),
         f"{g}/bearing_force_N": Data(r.bearing_force_N, "N", ("bearing_name", "load"),
                                      "force exerted by the bearing on the shaft"),
-        f"{g}/applied_force_N": Data(r.applied_force_N, "N", ("load",), "sum of the applied loads incl. gravity"),
+        f"{g}/applied_force_N": Data(r.applied_force_N, "N", ("load",), "sum of the applied loads, gravity included when on (attribute gravity_m_s2)"),
         f"{g}/static_stiffness_N_m": Data(r.static_stiffness_N_m, "N/m", (),
                                           "1 / compliance at (stiffness_node, stiffness_dof)"),
         **labels(g, "dof", XY), **labels(g, "rotation", ("theta_x", "theta_y")), **labels(g, "load", FXY),
     }
     attrs = {"speed_rpm": r.speed_rpm, "stiffness_node": r.stiffness_node + 1, "stiffness_dof": r.stiffness_dof,
-             "bearing_force_convention": "force exerted by the bearing on the shaft"}
+             "bearing_force_convention": "force exerted by the bearing on the shaft", "gravity_m_s2": r.gravity_m_s2}
     if r.axial_displacement_m is not None:
         data[f"{g}/axial_displacement_m"] = (r.axial_displacement_m, "m", ("node",))
         data[f"{g}/applied_axial_force_N"] = Data(r.applied_axial_force_N, "N", (), "sum of the applied axial (z) loads")

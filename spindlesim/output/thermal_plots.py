@@ -23,23 +23,34 @@ def _temperatures(ax, x, t, marker) -> None:
     ax.legend(fontsize=7, ncols=3, loc="upper left")
 
 
-def _preload_and_drift(ax_p, ax_d, x, t, marker) -> None:
+def _has_drift(t) -> bool:
+    """A drift panel only where there is a drift: a tool tip and an axial DOF."""
+    return bool(np.isfinite(t.drift_m).any())
+
+
+def _preload_and_drift(axes, x, t, marker) -> None:
+    """The preload panel (bearings with rows' thrust: not a cylindrical roller bearing) and, with a drift, the
+    drift panel: ``axes`` holds one or two axes."""
+    ax_p = axes[0]
     for k, b in enumerate(t.bearings):
-        ax_p.plot(x, t.preload_N[:, k], "-", color=_COLORS[k % len(_COLORS)], marker=marker, ms=3, label=b)
+        if np.isfinite(t.preload_N[:, k]).any():
+            ax_p.plot(x, t.preload_N[:, k], "-", color=_COLORS[k % len(_COLORS)], marker=marker, ms=3, label=b)
     ax_p.set_ylabel("operating preload [N]\n(largest row thrust)")
     ax_p.legend(fontsize=8, loc="upper left")
-    ax_d.plot(x, 1e6 * t.drift_m, "-", color="tab:brown", marker=marker, ms=3)
-    ax_d.set_ylabel("tool tip axial drift [um]")
+    if len(axes) > 1:
+        axes[1].plot(x, 1e6 * t.drift_m, "-", color="tab:brown", marker=marker, ms=3)
+        axes[1].set_ylabel("tool tip axial drift [um]")
 
 
 def speeds_figure(t, title: str = ""):
-    """Temperatures, operating preload and tool-tip drift at the thermal equilibrium of each speed; where a
-    runaway ended the list, a red line."""
-    fig = new_figure(9, 9, layout=None)
-    axes = fig.subplots(3, 1, sharex=True)
+    """Temperatures, operating preload and (with a tool tip) its drift at the thermal equilibrium of each speed;
+    where a runaway ended the list, a red line."""
+    n = 2 + _has_drift(t)
+    fig = new_figure(9, 3.0 * n, layout=None)
+    axes = fig.subplots(n, 1, sharex=True)
     _temperatures(axes[0], t.x, t, "o")
-    _preload_and_drift(axes[1], axes[2], t.x, t, "o")
-    axes[2].set_xlabel("spindle speed [rpm]")
+    _preload_and_drift(axes[1:], t.x, t, "o")
+    axes[-1].set_xlabel("spindle speed [rpm]")
     if t.runaway_rpm is not None and np.isfinite(t.runaway_rpm):
         for ax in axes:
             ax.axvline(t.runaway_rpm, color="tab:red", lw=1.5, ls="--")
@@ -60,16 +71,18 @@ def warm_up_figure(t, title: str = ""):
     """A warm-up: temperatures, operating preload, the tool tip's axial drift (ISO 230-3 style), the first
     natural frequencies and (with a chatter section) the minimum stable depth of cut against time, every other speed step shaded and labelled with its speed."""
     minutes = t.x / 60.0
-    n = 3 + (t.frequency_hz is not None) + (t.min_depth_m is not None)
+    drift = _has_drift(t)
+    n = 2 + drift + (t.frequency_hz is not None) + (t.min_depth_m is not None)
     fig = new_figure(9, 2.6 * n + 0.8, layout=None)
     axes = fig.subplots(n, 1, sharex=True)
     _temperatures(axes[0], minutes, t, None)
-    _preload_and_drift(axes[1], axes[2], minutes, t, None)
+    _preload_and_drift(axes[1:3 if drift else 2], minutes, t, None)
     if t.frequency_hz is not None:
+        ax = axes[2 + drift]
         for k in range(t.frequency_hz.shape[1]):
-            axes[3].plot(minutes, t.frequency_hz[:, k], "-", label=f"mode {k + 1}")
-        axes[3].set_ylabel("natural frequency [Hz]")
-        axes[3].legend(fontsize=7, ncols=4, loc="upper left")
+            ax.plot(minutes, t.frequency_hz[:, k], "-", label=f"mode {k + 1}")
+        ax.set_ylabel("natural frequency [Hz]")
+        ax.legend(fontsize=7, ncols=4, loc="upper left")
     if t.min_depth_m is not None:
         ax = axes[-1]
         ax.plot(minutes, 1e3 * t.min_depth_m, "-o", ms=3, color="C3",

@@ -63,13 +63,19 @@ def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: boo
         x, np.array([s.speed_rpm for s in states], float), tuple(bearings),
         np.array([[s.parts_C[b].inner_ring_C for b in bearings] for s in states]).reshape(len(states), len(bearings)),
         np.array([[s.parts_C[b].outer_ring_C for b in bearings] for s in states]).reshape(len(states), len(bearings)),
-        np.array([[np.nanmax(s.bearings[b].row_thrust_N) if b in s.bearings else np.nan for b in bearings]
+        np.array([[_max_thrust(s.bearings.get(b)) for b in bearings]
                   for s in states]).reshape(len(states), len(bearings)),
         np.array([s.temperatures_C["motor:rotor"] for s in states]) if motor else None,
         np.array([s.temperatures_C["motor:stator"] for s in states]) if motor else None,
         np.array([np.nan if s.tool_tip_axial_drift_m is None else s.tool_tip_axial_drift_m for s in states], float),
         None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm,
         None if min_depth_m is None else np.asarray(min_depth_m, float))
+
+
+def _max_thrust(report) -> float:
+    """The largest row thrust of a bearing's heat report (NaN: none, or a bearing without rows' thrust)."""
+    t = None if report is None else report.row_thrust_N
+    return float(np.nanmax(t)) if t is not None and len(t) else np.nan
 
 
 def _rows(states, bearings) -> int:
@@ -111,11 +117,11 @@ def _common(g: str, states, bearings, nodes, sources, boundaries, axis: str) -> 
         f"{g}/stored_W": Data(np.array([s.stored_W for s in states]), "W", dims,
                               "generated - removed: 0 at a steady state, the heat warming the parts in a warm-up"),
         f"{g}/row_thrust_N": Data(_per_bearing(states, bearings, rows, "row_thrust_N"), "N", dims + ("bearing", "row"),
-                                  "axial load each ball row carries (its operating preload)", fill_nan=True),
+                                  "axial load each row carries (its operating preload; NaN: a bearing without rows' thrust)", fill_nan=True),
         f"{g}/contact_angle_inner_deg": Data(_per_bearing(states, bearings, rows, "contact_angle_inner_deg"), "degree",
-                                             dims + ("bearing", "row"), "mean over the balls of the row", fill_nan=True),
+                                             dims + ("bearing", "row"), "mean over the rolling elements of the row (a DTRB: its cone and cup angles)", fill_nan=True),
         f"{g}/contact_angle_outer_deg": Data(_per_bearing(states, bearings, rows, "contact_angle_outer_deg"), "degree",
-                                             dims + ("bearing", "row"), "mean over the balls of the row", fill_nan=True),
+                                             dims + ("bearing", "row"), "mean over the rolling elements of the row (a DTRB: its cone and cup angles)", fill_nan=True),
         f"{g}/axial_offset_m": Data(np.array([[s.axial_offsets_m[b] for b in bearings] for s in states]), "m",
                                     dims + ("bearing",), "growth of the shaft minus that of the housing from the "
                                     "housing's front face to the bearing"),

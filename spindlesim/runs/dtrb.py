@@ -28,7 +28,7 @@ def _range(r) -> np.ndarray:
 
 def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, progress=None) -> list[Path]:
     from ..bearings.dtrb.plots import plot_load_distribution, plot_stiffness_sweep
-    from ..bearings.dtrb.section import at_deck_temperatures, geometry_from
+    from ..bearings.dtrb.section import at_deck_temperatures, geometry_from, material_body
     from ..output.drawing import draw
     from ..output.dtrb_writer import write_dtrb
 
@@ -40,8 +40,8 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
     speed = RPM * float(opts.get("speed_rpm", sec.speed_rpm))
     do_sweeps = bool(opts.get("sweeps", True))
     load = np.asarray(sec.load.vector(), float)
-    bearing = at_deck_temperatures(DtrbBearing(geometry_from(sec.bearing), preload), sec.temperatures_C,
-                                   sec.bearing.material)
+    bearing = at_deck_temperatures(DtrbBearing(geometry_from(sec.bearing), preload,
+                                               body=material_body(sec.bearing.material)), sec.temperatures_C)
     shift = bearing.preload_m - preload  # the growth's change of delta0, applied to the swept preloads too
     if shift:
         log.info("DTRB at temperature: preload %.4g um -> %.4g um", preload * 1e6, bearing.preload_m * 1e6)

@@ -18,7 +18,7 @@ import numpy as np
 from ..registry import ANALYSIS_REGISTRY
 
 #: name suffix -> unit, longest first (attribute names carry their unit: speed_rpm, load_N, area_m2)
-_SUFFIX_UNITS = (("_Ns_m", "N s/m"), ("_N_m", "N/m"), ("_m_N", "m/N"), ("_m3_s", "m^3/s"), ("_W_K", "W/K"),
+_SUFFIX_UNITS = (("_Ns_m", "N s/m"), ("_m_s2", "m/s^2"), ("_N_m", "N/m"), ("_m_N", "m/N"), ("_m3_s", "m^3/s"), ("_W_K", "W/K"),
                  ("_Pa_s", "Pa s"), ("_m_s", "m/s"), ("_g_mm", "g mm"), ("_Nm", "N m"), ("_hz", "Hz"),
                  ("_Hz", "Hz"), ("_rpm", "rpm"), ("_m2", "m^2"), ("_Pa", "Pa"), ("_GPa", "GPa"), ("_rad", "rad"),
                  ("_deg", "deg"), ("_um", "um"), ("_mm", "mm"), ("_m", "m"), ("_N", "N"), ("_s", "s"), ("_W", "W"),

@@ -17,6 +17,13 @@ primary sources, the assembly is ours):
    (d_m / 2D) omega (1 - gamma^2), gamma = D cos(alpha) / d_m (pure rolling, outer ring fixed;
    Harris and Kotzalas), on the ball surface Z pi D^2.
 
+Roller bearings (cylindrical, tapered): each roller touches a race on a strip of length l (the roller's)
+and Hertz half-width b = sqrt(8 Q R_x / (pi l E')) (line contact, E' = 2 E*; Johnson 1985, section 4.2,
+R_x = (D/2)(1 -+ gamma)), taken as the ellipse of the same semi-axes l/2 and b in Holm's formula (for a long
+strip K(e) -> ln(4 a / b): R = ln(2 l / b) / (pi k l), the constriction of a long strip); the film adds
+h / (k_lub pi (l/2) b).  Convection of the rollers to the oil-air: a cylinder spinning at its roller speed
+(:func:`spindlesim.thermal.convection.rotating_shaft_h` of the roller's diameter), on its mantle and ends.
+
 Contact ellipses from the ball loads: Hamrock and Brewe's approximations (J. Lubr. Technol. 105
 (1983) 171-177) of the Hertz solution, k = a/b = 1.0339 (R_y/R_x)^0.636, E(k) = 1.0003 + 0.5968
 R_x/R_y, a = (6 k^2 E Q R / (pi E'))^(1/3), b = (6 E Q R / (pi k E'))^(1/3), 1/R = 1/R_x + 1/R_y,
@@ -137,3 +144,42 @@ def ball_bearing_conductances(*, speed_rad_s: float, balls: int, ball_diameter_m
     h = ball_convection_h(ball_diameter_m, u, medium)
     return BearingConductances(ring(inner_axes_m, film_inner_m), ring(outer_axes_m, film_outer_m),
                                h * balls * math.pi * ball_diameter_m ** 2)
+
+
+def line_contact_half_width(load_N, rx_m: float, length_m: float, e_prime_Pa: float):
+    """Hertz half-width b [m] of a line contact: sqrt(8 Q R_x / (pi l E')) (module docstring); 0 unloaded."""
+    q = np.maximum(np.asarray(load_N, dtype=float), 0.0)
+    return np.sqrt(8.0 * q * rx_m / (math.pi * length_m * e_prime_Pa))
+
+
+def roller_spin_speed(speed_rad_s: float, roller_diameter_m: float, pitch_diameter_m: float,
+                      contact_angle_rad: float) -> float:
+    """Roller spin [rad/s]: (d_m / 2D) omega (1 - gamma^2), gamma = D cos(alpha) / d_m (pure rolling)."""
+    g = roller_diameter_m * math.cos(contact_angle_rad) / pitch_diameter_m
+    return 0.5 * pitch_diameter_m / roller_diameter_m * abs(speed_rad_s) * (1.0 - g * g)
+
+
+def roller_bearing_conductances(*, speed_rad_s: float, rollers: int, roller_diameter_m: float, roller_length_m: float,
+                                pitch_diameter_m: float, contact_angle_rad: float, inner_half_width_m,
+                                outer_half_width_m, k_roller_W_mK: float, k_ring_W_mK: float, medium_h,
+                                film_inner_m=0.0, film_outer_m=0.0,
+                                k_lubricant_W_mK: float = OIL_CONDUCTIVITY_W_MK) -> BearingConductances:
+    """Conductances of a roller bearing whose ``rollers`` (all rows) touch the races on strips of the
+    roller length and half-widths ``inner_half_width_m`` / ``outer_half_width_m`` (per roller, or one for
+    all; 0: unloaded); ``medium_h(diameter_m, spin_rad_s)``: h [W/(m^2 K)] of a spinning cylinder in the
+    cavity."""
+    half = 0.5 * roller_length_m
+
+    def ring(widths, film):
+        b = np.broadcast_to(np.asarray(widths, dtype=float), (rollers,))
+        f = np.broadcast_to(np.asarray(film, dtype=float), (rollers,))
+        on = b > 0.0
+        if not on.any():
+            return 0.0
+        return float(np.sum(contact_conductance(np.full(int(on.sum()), half), b[on], k_roller_W_mK, k_ring_W_mK,
+                                                f[on], k_lubricant_W_mK)))
+
+    spin = roller_spin_speed(speed_rad_s, roller_diameter_m, pitch_diameter_m, contact_angle_rad)
+    area = rollers * (math.pi * roller_diameter_m * roller_length_m + 0.5 * math.pi * roller_diameter_m ** 2)
+    return BearingConductances(ring(inner_half_width_m, film_inner_m), ring(outer_half_width_m, film_outer_m),
+                               medium_h(roller_diameter_m, spin) * area)

@@ -28,6 +28,12 @@ chapter; the same coefficients as in Palmgren's *Ball and Roller Bearing Enginee
   X0 0.6, Y0 0.5; single-row angular contact X0 0.5, Y0 0.46 / 0.42 / 0.38 / 0.33 / 0.29 / 0.26 / 0.22 at
   15 / 20 / 25 / 30 / 35 / 40 / 45 deg (interpolated between).
 
+Where the heat goes (roller bearings in the spindle's network, :func:`palmgren_parts_W`; our choice, the
+global model says nothing of it): the load moment is friction in the raceway contacts, taken half at the
+inner and half at the outer contacts and, as in the ball model, half of each contact's heat to the ring and
+half to the rolling elements (1/4, 1/2, 1/4); the viscous moment is the lubricant's drag and churning,
+heat in the oil around the rolling elements (to the rolling elements' node, as the ball model's drag).
+
 Viscosity: the Walther (ASTM D341) relation and ISO VG data of :mod:`spindlesim.bearings.fluidfilm.viscosity`.
 """
 
@@ -191,6 +197,13 @@ def roller_palmgren(*, family: str, pitch_diameter_m: float, radial_N: float, sp
     return PalmgrenMoment(load_Nm=f1 * P1 * pitch_diameter_m,
                           viscous_Nm=viscous_moment_Nm(f0, pitch_diameter_m, speed_rad_s, viscosity_m2_s),
                           speed_rad_s=float(speed_rad_s), f0=f0, f1=f1, P1_N=P1)
+
+
+def palmgren_parts_W(moments) -> tuple[float, float, float]:
+    """(inner ring, rolling elements, outer ring) heat [W] of Palmgren moments (one per row), module note."""
+    load = sum(m.load_Nm * abs(m.speed_rad_s) for m in moments)
+    viscous = sum(m.viscous_Nm * abs(m.speed_rad_s) for m in moments)
+    return 0.25 * load, 0.5 * load + viscous, 0.25 * load
 
 
 def row_loads_N(state) -> tuple[np.ndarray, np.ndarray]:

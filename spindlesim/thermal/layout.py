@@ -58,8 +58,11 @@ class HousingSegment:
 
 @dataclass(frozen=True)
 class BearingSet:
-    """A bearing set (all its rows) centred at ``position_m``: three nodes, inner ring, balls, outer
-    ring.  Masses default to estimates from the geometry (ring shoulders at d_m -+ 0.35 D)."""
+    """A bearing set (all its rows) centred at ``position_m``: three nodes, inner ring, rolling elements,
+    outer ring.  ``element``: "ball" (Hertz point contacts; ``balls`` balls of ``ball_diameter_m``) or
+    "roller" (line contacts of ``roller_length_m``; ``balls`` rollers of mean diameter ``ball_diameter_m``,
+    ``contact_angle_rad`` a tapered roller bearing's cup angle, 0 for a cylindrical one).  Masses default to
+    estimates from the geometry (ring shoulders at d_m -+ 0.35 D)."""
 
     name: str
     position_m: float
@@ -83,6 +86,19 @@ class BearingSet:
     outer_ring_mass_kg: float | None = None
     inner_seat_W_m2K: float = SEAT_CONDUCTANCE_W_M2K
     outer_seat_W_m2K: float = SEAT_CONDUCTANCE_W_M2K
+    element: str = "ball"
+    roller_length_m: float = 0.0
+
+    def __post_init__(self) -> None:
+        if self.element not in ("ball", "roller"):
+            raise ValueError(f"bearing set {self.name!r}: element must be 'ball' or 'roller', not {self.element!r}")
+        if self.element == "roller" and self.roller_length_m <= 0.0:
+            raise ValueError(f"bearing set {self.name!r}: a roller set needs its roller length")
+
+    @property
+    def elements_node(self) -> str:
+        """The name of its rolling elements' node: ``bearing:<name>:balls`` or ``bearing:<name>:rollers``."""
+        return f"bearing:{self.name}:{'balls' if self.element == 'ball' else 'rollers'}"
 
     @property
     def inner_shoulder_m(self) -> float:
@@ -103,6 +119,9 @@ class BearingSet:
         return self.ring.density_kg_m3 * 0.25 * math.pi * (self.outer_diameter_m ** 2 - self.outer_shoulder_m ** 2) * self.width_m
 
     def balls_mass_kg(self) -> float:
+        """Mass of the rolling elements (balls or rollers) [kg]."""
+        if self.element == "roller":
+            return self.balls * self.ball.density_kg_m3 * 0.25 * math.pi * self.ball_diameter_m ** 2 * self.roller_length_m
         return self.balls * self.ball.density_kg_m3 * math.pi * self.ball_diameter_m ** 3 / 6.0
 
 

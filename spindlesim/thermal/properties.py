@@ -108,6 +108,11 @@ TABLES = {"air": _AIR, "water": _WATER, "water_glycol_30": _MEG30, "water_glycol
 FLUIDS = tuple(TABLES)
 
 
+class PropertyRangeError(ValueError):
+    """A fluid's temperature left its property table (a coolant boiling, air beyond 200 C): in a spindle's
+    thermal loop, the sign that the spindle has run away."""
+
+
 class _Table:
     """Columns of a property table as Python lists (a scalar lookup is a bisect, ~1 us)."""
 
@@ -122,7 +127,7 @@ class _Table:
         t = float(t_C)
         ts = self.t
         if not ts[0] - 1e-9 <= t <= ts[-1] + 1e-9:
-            raise ValueError(f"{self.name} properties are tabulated for {ts[0]:g}..{ts[-1]:g} degC, not {t:g} degC")
+            raise PropertyRangeError(f"{self.name} properties are tabulated for {ts[0]:g}..{ts[-1]:g} degC, not {t:g} degC")
         i = min(max(bisect.bisect_right(ts, t) - 1, 0), len(ts) - 2)
         w = (t - ts[i]) / (ts[i + 1] - ts[i])
         rho, k, cp = ((1.0 - w) * c[i] + w * c[i + 1] for c in self.cols)

@@ -7,9 +7,9 @@ Nodes (names are stable; the coupling code refers to them):
 - ``housing[j]``: housing segment j, axial conduction likewise, radial conduction through half its
   wall to the inner and the outer surface; outer surface to ``ambient`` by free convection of a
   horizontal cylinder (Churchill-Chu, at the current temperatures) and radiation;
-- ``bearing:<name>:inner|balls|outer``: inner ring -- shaft segment under the bearing (seat contact
-  in series with half the ring's radial conduction), inner ring -- balls and balls -- outer ring
-  through the Hertz contacts and the EHL film, balls -- housing through the oil-air of the bearing
+- ``bearing:<name>:inner|balls|outer`` (``rollers`` for a roller bearing): inner ring -- shaft segment under
+  the bearing (seat contact in series with half the ring's radial conduction), inner ring -- balls and balls --
+  outer ring through the Hertz contacts and the EHL film, balls -- housing through the oil-air of the bearing
   cavity (Whitaker), outer ring -- housing segment (seat contact, half ring, half housing wall);
 - ``jacket:coolant[k]``: coolant segments in flow order, fed by the boundary ``jacket:inlet``
   (advection m_dot c_p), each exchanging with the housing segment at its axial position (h from
@@ -36,7 +36,8 @@ from typing import Mapping
 import numpy as np
 
 from . import convection as cv
-from .bearing_conductance import ball_bearing_conductances, contact_ellipse_unit, race_radii
+from .bearing_conductance import (ball_bearing_conductances, contact_ellipse_unit, line_contact_half_width, race_radii,
+                                  roller_bearing_conductances)
 from .conduction import axial_conductance, conductance_in_series, cylindrical_shell_conductance
 from .layout import SpindleLayout
 from .motor import MotorLosses, motor_losses, windage_loss_W
@@ -114,22 +115,34 @@ class SpindleNetwork:
             c = (contacts or {}).get(b.name)
             g = self._bearing(b, speed_rad_s, c, T)
             faces_i, faces_o = self._ring_faces(b, speed_rad_s)
-            out[f"bearing:{b.name}:inner--balls"] = g.inner_balls_W_K + faces_i
-            out[f"bearing:{b.name}:balls--outer"] = g.balls_outer_W_K + faces_o
-            out[f"bearing:{b.name}:balls--housing"] = g.balls_cavity_W_K
+            el = _suffix(b)
+            out[f"bearing:{b.name}:inner--{el}"] = g.inner_balls_W_K + faces_i
+            out[f"bearing:{b.name}:{el}--outer"] = g.balls_outer_W_K + faces_o
+            out[f"bearing:{b.name}:{el}--housing"] = g.balls_cavity_W_K
         return out
 
     def _bearing(self, b, speed, c: BearingContacts | None, T):
-        a1i, b1i, a1o, b1o = self._hertz[b.name]
         qi = np.asarray(b.nominal_contact_load_N if c is None else c.inner_N, dtype=float)
         qo = np.asarray(b.nominal_contact_load_N if c is None else c.outer_N, dtype=float)
+        t_air = self._inner_air_C() if T is None else float(T[self.network.index(b.elements_node)])
+        medium = air(_clip_air(t_air))
+        films = dict(film_inner_m=0.0 if c is None else c.film_inner_m, film_outer_m=0.0 if c is None else c.film_outer_m)
+        if b.element == "roller":
+            rxi, rxo, e_prime = self._hertz[b.name]
+            return roller_bearing_conductances(
+                speed_rad_s=speed, rollers=b.balls, roller_diameter_m=b.ball_diameter_m,
+                roller_length_m=b.roller_length_m, pitch_diameter_m=b.pitch_diameter_m,
+                contact_angle_rad=b.contact_angle_rad,
+                inner_half_width_m=line_contact_half_width(qi, rxi, b.roller_length_m, e_prime),
+                outer_half_width_m=line_contact_half_width(qo, rxo, b.roller_length_m, e_prime),
+                k_roller_W_mK=b.ball.conductivity_W_mK, k_ring_W_mK=b.ring.conductivity_W_mK,
+                medium_h=lambda d, w: cv.rotating_shaft_h(d, w, _clip_air(t_air + 10.0), _clip_air(t_air)), **films)
+        a1i, b1i, a1o, b1o = self._hertz[b.name]
         qi, qo = np.maximum(qi, 0.0) ** (1.0 / 3.0), np.maximum(qo, 0.0) ** (1.0 / 3.0)
-        t_air = self._inner_air_C() if T is None else float(T[self.network.index(f"bearing:{b.name}:balls")])
         return ball_bearing_conductances(
             speed_rad_s=speed, balls=b.balls, ball_diameter_m=b.ball_diameter_m, pitch_diameter_m=b.pitch_diameter_m,
             contact_angle_rad=b.contact_angle_rad, inner_axes_m=(a1i * qi, b1i * qi), outer_axes_m=(a1o * qo, b1o * qo),
-            k_ball_W_mK=b.ball.conductivity_W_mK, k_ring_W_mK=b.ring.conductivity_W_mK, medium=air(_clip_air(t_air)),
-            film_inner_m=0.0 if c is None else c.film_inner_m, film_outer_m=0.0 if c is None else c.film_outer_m)
+            k_ball_W_mK=b.ball.conductivity_W_mK, k_ring_W_mK=b.ring.conductivity_W_mK, medium=medium, **films)
 
     def _ring_faces(self, b, speed: float) -> tuple[float, float]:
         """Convection [W/K] of the rings' free surfaces (side faces and shoulder lands, all rows) to the oil-air
@@ -167,12 +180,12 @@ class SpindleNetwork:
                 motor: MotorLosses | None = None) -> dict[str, float]:
         """Heat sources {node: W} from the bearings' split heat and the motor losses."""
         q: dict[str, float] = {}
-        names = {b.name for b in self.layout.bearings}
+        names = {b.name: b.elements_node for b in self.layout.bearings}
         for name, h in (bearing_heat or {}).items():
             if name not in names:
                 raise KeyError(f"no bearing named {name!r} in the spindle layout (have {sorted(names)})")
             q[f"bearing:{name}:inner"] = float(h.inner_W)
-            q[f"bearing:{name}:balls"] = float(h.balls_W)
+            q[names[name]] = float(h.balls_W)
             q[f"bearing:{name}:outer"] = float(h.outer_W)
         if motor is not None:
             if self.layout.motor is None:
@@ -255,6 +268,11 @@ class SpindleNetwork:
                                rtol=rtol, atol=atol, t_eval=t_eval, dt_s=dt_s)
 
 
+def _suffix(b) -> str:
+    """"balls" or "rollers": the last part of the set's rolling elements' node name."""
+    return b.elements_node.rsplit(":", 1)[1]
+
+
 def _clip_air(t: float) -> float:
     return min(max(t, -20.0), 200.0)
 
@@ -320,8 +338,9 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
     hertz = {}
     for b in lay.bearings:
         pre = f"bearing:{b.name}"
+        el = _suffix(b)
         nodes += [Node(f"{pre}:inner", b.inner_mass_kg() * b.ring.specific_heat_J_kgK),
-                  Node(f"{pre}:balls", b.balls_mass_kg() * b.ball.specific_heat_J_kgK),
+                  Node(b.elements_node, b.balls_mass_kg() * b.ball.specific_heat_J_kgK),
                   Node(f"{pre}:outer", b.outer_mass_kg() * b.ring.specific_heat_J_kgK)]
         i = _segment_at(s_edges, b.position_m, f"bearing {b.name!r}")
         j = _segment_at(h_edges, b.position_m, f"bearing {b.name!r} (housing)")
@@ -340,15 +359,17 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
             cylindrical_shell_conductance(0.5 * hs.inner_diameter_m, h_half[j], b.width_m, kh)
             if h_half[j] > 0.5 * hs.inner_diameter_m else math.inf)
         add(f"{pre}:outer", f"housing[{j}]", g_out)
-        add(f"{pre}:inner", f"{pre}:balls", 0.0, f"{pre}:inner--balls")
-        add(f"{pre}:balls", f"{pre}:outer", 0.0, f"{pre}:balls--outer")
-        add(f"{pre}:balls", f"housing[{j}]", 0.0, f"{pre}:balls--housing")
+        add(f"{pre}:inner", b.elements_node, 0.0, f"{pre}:inner--{el}")
+        add(b.elements_node, f"{pre}:outer", 0.0, f"{pre}:{el}--outer")
+        add(b.elements_node, f"housing[{j}]", 0.0, f"{pre}:{el}--housing")
         rules.append((f"{pre}", "bearing", {}))
         e_prime = 2.0 / ((1.0 - b.ring_poisson ** 2) / b.ring_E_Pa + (1.0 - b.ball_poisson ** 2) / b.ball_E_Pa)
         args = (b.ball_diameter_m, b.pitch_diameter_m, b.contact_angle_rad)
-        unit_i = contact_ellipse_unit(*race_radii(*args, b.inner_conformity, "inner"), e_prime)
-        unit_o = contact_ellipse_unit(*race_radii(*args, b.outer_conformity, "outer"), e_prime)
-        hertz[b.name] = unit_i + unit_o
+        r_i, r_o = race_radii(*args, b.inner_conformity, "inner"), race_radii(*args, b.outer_conformity, "outer")
+        if b.element == "roller":  # rolling radii R_x and E' of the line contacts
+            hertz[b.name] = (r_i[0], r_o[0], e_prime)
+        else:
+            hertz[b.name] = contact_ellipse_unit(*r_i, e_prime) + contact_ellipse_unit(*r_o, e_prime)
 
     if lay.motor is not None:
         _motor(lay, nodes, add, rules, s_edges, h_edges, h_half, covered, air_ref)

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from spindlesim.bearings.dtrb.bearing import DtrbBearing
-from spindlesim.bearings.dtrb.section import DtrbMaterial, at_deck_temperatures, geometry_from
+from spindlesim.bearings.dtrb.section import DtrbMaterial, at_deck_temperatures, geometry_from, material_body
 from spindlesim.bearings.temperatures import PartTemperatures as DtrbTemperatures
 from spindlesim.deck import default_deck
 from spindlesim.thermal.growth import BEARING_STEEL
@@ -29,9 +29,9 @@ def section():
 
 
 def _at(section, inner, outer, rollers, material=None):
-    b = DtrbBearing(geometry_from(section.bearing), 30e-6)
+    b = DtrbBearing(geometry_from(section.bearing), 30e-6, body=material_body(material or section.bearing.material))
     t = DtrbTemperatures(inner_ring=inner, outer_ring=outer, rolling_elements=rollers)
-    return b, at_deck_temperatures(b, t, material or section.bearing.material)
+    return b, at_deck_temperatures(b, t)
 
 
 def test_uniform_temperature_keeps_the_preload(section):
@@ -97,3 +97,14 @@ def test_cylindrical_roller_entry_takes_its_clearance_from_the_temperatures():
     grown_gap = 0.5 * (do - di - 2 * dw) * a * 40.0  # a uniform growth scales the raceway gap as well
     assert operating_clearance_mm(uniform) == pytest.approx(0.010 + grown_gap, rel=1e-9)
     assert build(e).radial_clearance_m == pytest.approx(by_hand * 1e-3, rel=1e-12)
+
+
+def test_temperatures_apply_to_the_assembled_preload_not_the_last_one(section):
+    """A thermal loop calls ``at_temperatures`` on the bearing of each pass: the change is from the cold
+    assembly's delta0 every time, never added twice; freezing at an operating point keeps it."""
+    b, warm = _at(section, 40.0, 30.0, 35.0)
+    t = BearingTemperatures(40.0, 30.0, 35.0)
+    assert warm.at_temperatures(t).preload_m == pytest.approx(warm.preload_m, rel=1e-12)
+    assert warm.at_temperatures(BearingTemperatures.uniform(20.0)).preload_m == pytest.approx(b.preload_m, abs=1e-15)
+    frozen = warm.at_operating_point(0.0, np.zeros(5))
+    assert frozen.made_preload_m == b.preload_m and frozen.body is warm.body

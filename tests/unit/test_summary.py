@@ -1,6 +1,7 @@
 """Result summaries on the terminal (issue 16, item 8): text by default, --quiet, --json."""
 
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -155,3 +156,43 @@ def test_modal_damping_has_significant_digits(tmp_path):
     out = _run(tmp_path, "modal", str(DECKS / "milling_spindle.yaml"), "--modes", "2")  # an axial mode, zeta 1.5e-05
     rows = [ln.split() for ln in out.splitlines() if ln.strip()[:2].strip().isdigit() and "Hz" not in ln]
     assert [r[2] for r in rows] == ["1.49e-05", "0.00889"]  # old: 0.0000, 0.0089
+
+
+def _unloaded_lathe(tmp_path) -> Path:
+    """decks/lathe_headstock.yaml without its thermal section, loads and gravity: a DTRB rotor whose axial mode has
+    no damping at all (the dampers act on x and y)."""
+    import yaml
+
+    d = yaml.safe_load((DECKS / "lathe_headstock.yaml").read_text())
+    d.pop("spindle_thermal")
+    d.pop("loads")
+    d["operating"]["gravity"] = False
+    path = tmp_path / "lathe.yaml"
+    path.write_text(yaml.safe_dump(d))
+    return path
+
+
+def test_an_undamped_mode_is_not_unstable(tmp_path):
+    """Its computed damping ratio is round-off of either sign (it was -4.2e-15 and reported UNSTABLE): zero."""
+    from spindlesim.analysis.modal import solve_modal
+    from spindlesim.deck import load_deck
+    from spindlesim.model.build import build_rotor
+
+    rotor = build_rotor(load_deck(_unloaded_lathe(tmp_path)).deck)
+    m = solve_modal(rotor, 1200.0, 6)
+    axial = [k for k, w in enumerate(m.whirl) if w == "axial"]
+    assert axial, m.whirl
+    for k in axial:
+        assert m.damping_ratio[k] == 0.0 and math.copysign(1.0, m.log_dec[k]) == 1.0
+        assert not m.unstable[k]
+    assert np.all(m.damping_ratio[[k for k in range(len(m.whirl)) if k not in axial]] > 1e-4)
+    out = _run(tmp_path / "out", "modal", str(_unloaded_lathe(tmp_path)), "--modes", "6")
+    assert "UNSTABLE" not in out and " -0 " not in out
+
+
+def test_static_summary_says_whether_gravity_is_on(tmp_path):
+    out = _run(tmp_path / "a", "static", str(_unloaded_lathe(tmp_path)))
+    assert "under the applied loads, no gravity: Fx 0 N, Fy 0 N" in out
+    assert "deflection there x 0 um, y 0 um" in out  # nothing loads the rotor: noise prints 0
+    out = _run(tmp_path / "b", "static", str(DECKS / "lathe_headstock.yaml"))
+    assert "gravity 9.80665 m/s2 included" in out

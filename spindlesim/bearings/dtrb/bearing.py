@@ -39,9 +39,14 @@ class DtrbBearing(BearingBase):
 
     def __init__(self, geometry: DtrbGeometry, preload_m: float = 0.0, *, name: str = "dtrb", node: int = 0,
                  axial_load_N: float = 0.0, row_offset_rad: Sequence[float] = (0.0, 0.0),
-                 dof_names: Sequence[str] = DOFS_2, held: Sequence[float] = (0.0, 0.0, 0.0)):
+                 dof_names: Sequence[str] = DOFS_2, held: Sequence[float] = (0.0, 0.0, 0.0), body=None,
+                 made_preload_m: float | None = None):
         self.geometry = geometry
         self.preload_m = float(preload_m)
+        #: rings' and rollers' ``thermal.growth.ThermoElastic`` (None: bearing steel) and delta0 as assembled
+        #: (cold; None: ``preload_m``), the start of :meth:`at_temperatures`
+        self.body = body
+        self.made_preload_m = self.preload_m if made_preload_m is None else float(made_preload_m)
         self.name = name
         self.node = int(node)
         self.axial_load_N = float(axial_load_N)
@@ -54,22 +59,31 @@ class DtrbBearing(BearingBase):
         if self._held.shape != (3,):
             raise ValueError("held needs z, phiX and phiY")
 
-    def with_preload(self, preload_m: float, held: Sequence[float] = (0.0, 0.0, 0.0)) -> "DtrbBearing":
-        """The same bearing at another preload (``held``: as in the constructor)."""
+    def with_preload(self, preload_m: float, held: Sequence[float] = (0.0, 0.0, 0.0),
+                     made_preload_m: float | None = None) -> "DtrbBearing":
+        """The same bearing at another preload (``held``: as in the constructor; ``made_preload_m``: the
+        cold assembly's delta0 when this preload is that of a temperature, else the new preload itself)."""
         return DtrbBearing(self.geometry, preload_m, name=self.name, node=self.node,
                            axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
-                           dof_names=self.dof_names, held=held)
+                           dof_names=self.dof_names, held=held, body=self.body, made_preload_m=made_preload_m)
 
-    def at_temperatures(self, temperatures, body=None) -> "DtrbBearing":
+    def at_temperatures(self, temperatures) -> "DtrbBearing":
         """This bearing with the preload delta0 its parts' growth at ``temperatures``
-        (``thermal.growth_bearings.BearingTemperatures``) gives: delta0 + the change of
-        ``thermal.growth_bearings.dtrb_preload_change`` (``body``: rings' and rollers' ``ThermoElastic``,
-        default bearing steel).  A preload that growth takes below zero is a clearance (negative delta0)."""
+        (``thermal.growth_bearings.BearingTemperatures``) gives: the assembled delta0 + the change of
+        ``thermal.growth_bearings.dtrb_preload_change`` (rings and rollers of ``body``).  A preload that
+        growth takes below zero is a clearance (negative delta0)."""
         from ...thermal.growth import BEARING_STEEL
         from ...thermal.growth_bearings import dtrb_preload_change
 
-        change = dtrb_preload_change(self.geometry, temperatures, BEARING_STEEL if body is None else body)
-        return self.with_preload(self.preload_m + change.preload_change_m)
+        change = dtrb_preload_change(self.geometry, temperatures, BEARING_STEEL if self.body is None else self.body)
+        return self.with_preload(self.made_preload_m + change.preload_change_m, held=self._held,
+                                 made_preload_m=self.made_preload_m)
+
+    def heat(self, speed, static_load, lubrication, lubricant_C, displacement=None):
+        """Heat at the operating point: Palmgren's tapered-roller moment per row (.thermal)."""
+        from . import thermal
+
+        return thermal.heat(self, speed, static_load, lubrication, lubricant_C, displacement)
 
     # ---- inertia (eqs. 31-32) -------------------------------------------------------
     def inertia_load(self, speed_rad_s: float) -> np.ndarray:
@@ -209,8 +223,10 @@ class DtrbBearing(BearingBase):
         if transient:
             return TimeSteppedDtrb(self.geometry, self.preload_m, name=self.name, node=self.node,
                                    axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
-                                   dof_names=self.dof_names, held=held)
-        return self if len(self.dof_names) == 5 else self.with_preload(self.preload_m, held=held)
+                                   dof_names=self.dof_names, held=held, body=self.body,
+                                   made_preload_m=self.made_preload_m)
+        return self if len(self.dof_names) == 5 else self.with_preload(self.preload_m, held=held,
+                                                                       made_preload_m=self.made_preload_m)
 
     def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
         """Contract: (force on the shaft, K_t = -df/dq, C_t = 0) on ``dof_names`` at the node

@@ -184,19 +184,21 @@ def geometry_from(spec: DtrbGeometrySpec):
     )
 
 
+def material_body(material: DtrbMaterial):
+    """The rings' and rollers' ``ThermoElastic`` of the deck's material (its growth at temperature)."""
+    return body(1e9 * material.E_GPa, material.poisson, material.density_kg_m3, material.thermal_expansion_1_K)
+
+
 def build(entry: DtrbBearingEntry):
     """Rotor deck entry (deck units) -> :class:`DtrbBearing` (SI), at ``temperatures_C`` when given."""
     from .bearing import DOFS_2, DOFS_5, DtrbBearing
 
     b = DtrbBearing(geometry_from(entry.geometry), 1e-6 * entry.preload_um, name=entry.name,
                     node=entry.node - 1, axial_load_N=entry.axial_load_N,
-                    dof_names=DOFS_5 if entry.dofs == 5 else DOFS_2)
-    return at_deck_temperatures(b, entry.temperatures_C, entry.geometry.material)
+                    dof_names=DOFS_5 if entry.dofs == 5 else DOFS_2, body=material_body(entry.geometry.material))
+    return at_deck_temperatures(b, entry.temperatures_C)
 
 
-def at_deck_temperatures(bearing, temps: "PartTemperatures | None", material: DtrbMaterial):
+def at_deck_temperatures(bearing, temps: "PartTemperatures | None"):
     """``bearing`` at the deck's prescribed temperatures (itself without them)."""
-    if temps is None:
-        return bearing
-    return bearing.at_temperatures(temps.si(), body(1e9 * material.E_GPa, material.poisson, material.density_kg_m3,
-                                                    material.thermal_expansion_1_K))
+    return bearing if temps is None else bearing.at_temperatures(temps.si())

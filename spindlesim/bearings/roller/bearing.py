@@ -90,6 +90,19 @@ class RigidRaceBearing(RigidRace, BearingBase):
         Q = self.stiffness * np.maximum(d, 0.0) ** self.exponent
         return {"force": (-np.array([Q @ np.cos(th), Q @ np.sin(th)]), "N"), "roller_load_N": (Q, "N")}
 
+    # the spindle's thermal model (contract: at_temperatures, heat) ------------
+    def at_temperatures(self, temperatures) -> "RigidRaceBearing":
+        """The bearing at the radial clearance its parts' growth gives (.thermal)."""
+        from . import thermal
+
+        return thermal.at_temperatures(self, temperatures)
+
+    def heat(self, speed, static_load, lubrication, lubricant_C, displacement=None):
+        """Palmgren's cylindrical-roller heat at the operating point (.thermal)."""
+        from . import thermal
+
+        return thermal.heat(self, speed, static_load, lubrication, lubricant_C, displacement)
+
     def compiled(self) -> CompiledForce:
         """floats: [K, n, gamma0, cage ratio, spin ratio, cos base (N), sin base (N), waviness (4 per row)]."""
         base = self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers

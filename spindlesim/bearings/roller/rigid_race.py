@@ -66,6 +66,8 @@ class RigidRace:
     waviness: tuple[Waviness, ...] = field(default_factory=tuple)
     phase_rad: float = 0.0
     dof_names: tuple[str, ...] = RADIAL
+    body: object = None  # rings' and rollers' thermal.growth.ThermoElastic (None: bearing steel), for at_temperatures
+    made_clearance_m: float | None = None  # radial clearance as assembled (cold; None: radial_clearance_m)
 
     def __post_init__(self) -> None:
         if self.rollers < 3:

@@ -192,9 +192,13 @@ def operating_clearance_mm(e: RollerEntry) -> float:
     from ...thermal.growth_bearings import roller_operating_clearance
 
     grown = roller_operating_clearance(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
-                                       e.roller_diameter_mm * 1e-3, e.temperatures_C.si(),
-                                       body(e.E_GPa * 1e9, 0.3, e.density_kg_m3, e.thermal_expansion_1_K))  # free rings: E, nu unused
+                                       e.roller_diameter_mm * 1e-3, e.temperatures_C.si(), _body(e))
     return e.radial_clearance_mm + 0.5e3 * grown.change_m
+
+
+def _body(e: RollerEntry):
+    """Rings' and rollers' ``ThermoElastic`` (free rings: E and nu do not enter their growth)."""
+    return body(e.E_GPa * 1e9, 0.3, e.density_kg_m3, e.thermal_expansion_1_K)
 
 
 def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
@@ -219,7 +223,9 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
         kin = CageKinematics(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
                              e.roller_diameter_mm * 1e-3, e.slip_inner, e.slip_outer)
         wav = tuple(Waviness(w.surface, w.waves, w.amplitude_um * 1e-6, np.radians(w.phase_deg)) for w in e.waviness)
-        return RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, clearance_mm * 1e-3, wav)
+        cold = RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, e.radial_clearance_mm * 1e-3, wav,
+                                body=_body(e))
+        return cold if e.temperatures_C is None else cold.at_temperatures(e.temperatures_C.si())
     from .contact_force import CompliantContact
     from .bearing import FlexibleRaceBearing
     from .flexible_race import HousingSupport
