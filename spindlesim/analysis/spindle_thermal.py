@@ -25,7 +25,10 @@ bearings' heat re-evaluated from their state at the current temperatures wheneve
 by more than ``REFRESH_K``.
 
 The tool tip's axial drift (what ISO 230-3 measures) is its elastic axial displacement plus the free growth of
-the shaft from the housing's front face to the tip (the holder and tool at the temperature of the nose).
+the shaft from the housing's front face to the tip (the holder and tool at the temperature of the nose); its
+radial drift is its static deflection (x, y) in the state (the network is axisymmetric: the rings', shaft's and
+housing's radial growth moves no axis, the bearings' stiffness and the loads move the tip).  Both are positions
+against the cold, unloaded spindle: a warm-up's drift is their change from its first instant.
 """
 
 from __future__ import annotations
@@ -80,6 +83,7 @@ class ThermalState:
     time_s: float | None = None  # an instant of a warm-up
     removed_W: dict[str, float] | None = None  # heat carried to each boundary (ambient, coolant inlet)
     stored_W: float = 0.0  # generated - removed: zero at a steady state, what warms the parts in a warm-up
+    tool_tip_radial_m: tuple[float, float] | None = None  # the tip's static deflection x, y (module note)
 
     @property
     def total_heat_W(self) -> float:
@@ -218,7 +222,16 @@ class SpindleThermal:
         balance = self.network.network.heat_flows(Tv, self.network.sources(bearing_heat, motor),
                                                   conductances=self.network.conductances(om, Tv, contacts))
         return ThermalState(speed_rpm, dict(T), heat, reports, parts, offsets, st, self._tip_drift(T, st), iterations,
-                            time_s=time_s, removed_W=dict(balance.removed_W), stored_W=balance.stored_W)
+                            time_s=time_s, removed_W=dict(balance.removed_W), stored_W=balance.stored_W,
+                            tool_tip_radial_m=self._tip_radial(st))
+
+    def _tip_radial(self, st: OperatingState) -> tuple[float, float] | None:
+        """The tool tip's static deflection (x, y) [m] in the state (module note)."""
+        tip = self.rotor.tool_tip
+        if tip is None:
+            return None
+        d = self.rotor.dofs
+        return float(st.q[d.index(tip, "x")]), float(st.q[d.index(tip, "y")])
 
     def _tip_drift(self, T: dict[str, float], st: OperatingState) -> float | None:
         """Axial position change of the tool tip against the housing's front face [m] (module note)."""

@@ -37,6 +37,7 @@ def _spindle_thermal(f):
         heat, inner, outer = g["heat_W"][:], g["inner_ring_C"][:], g["outer_ring_C"][:]
         thrust = g["row_thrust_N"][:]
         drift = g["tool_tip_axial_drift_m"][:]
+        radial = g["tool_tip_radial_drift_m"][:] if "tool_tip_radial_drift_m" in g else None
         lines.append(f"thermal equilibrium at {len(sp)} speed(s), ambient {float(a['ambient_C']):g} C, "
                      f"{a['lubrication']}, motor load {float(a['motor_load_fraction']):g}")
         for i, s in enumerate(sp):
@@ -44,6 +45,8 @@ def _spindle_thermal(f):
             parts = [f"{n} {heat[i, sources.index('bearing:' + n)]:.0f} W, rings {inner[i, j]:.1f}/{outer[i, j]:.1f} C"
                      + _preload(thrust[i, j]) for j, n in enumerate(names) if f"bearing:{n}" in sources]
             tip = "" if not np.isfinite(drift[i]) else f"; tool tip {drift[i] * 1e6:+.1f} um axially"
+            if radial is not None and np.isfinite(radial[i]).all():
+                tip += f", x {radial[i, 0] * 1e6:+.2f} / y {radial[i, 1] * 1e6:+.2f} um radially"
             lines.append(f"  {s:7.0f} rpm: motor {motor:.0f} W; " + "; ".join(parts) + tip)
         data.update(speed_rpm=sp.tolist(), heat_W=heat.tolist(), tool_tip_axial_drift_m=drift.tolist())
     if "speed_limit_rpm" in a:
@@ -59,10 +62,14 @@ def _spindle_thermal(f):
         w = g["warm_up"]
         t = w["time_s"][:]
         drift = w["tool_tip_axial_drift_m"][:]
+        radial = w["tool_tip_radial_drift_m"][:] if "tool_tip_radial_drift_m" in w else None
         fr = w["natural_frequency_hz"][:]
         line = f"  warm-up over {t[-1] / 60:.0f} min ({len(t)} instants)"
         if np.isfinite(drift).any():
             line += f": tool tip axial drift {np.nanmin(drift) * 1e6:+.1f} .. {np.nanmax(drift) * 1e6:+.1f} um"
+        if radial is not None and np.isfinite(radial).all():
+            change = np.hypot(*(radial - radial[0]).T)
+            line += f", radial drift from the first instant up to {np.max(change) * 1e6:.2f} um"
         if fr.size and np.isfinite(fr[:, 0]).all():
             line += f"; first natural frequency {fr[0, 0]:.1f} -> {fr[-1, 0]:.1f} Hz"
         lines.append(line)

@@ -70,6 +70,10 @@ def transient(f):
     data = {"duration_s": float(t[-1]), "amplitude_m": amp.tolist()}
     bearings = list(g.get("bearings", {}))
     lines += _transient_settling(a, data, bearings)
+    if "thermal_equilibrium_rpm" in a:
+        rpm = float(scalar(a["thermal_equilibrium_rpm"]))
+        lines.append(f"  bearings at the spindle's thermal equilibrium of {rpm:g} rpm (deck spindle_thermal)")
+        data["thermal_equilibrium_rpm"] = rpm
     fr = g["spectrum/frequency_hz"][:] if "spectrum" in g else np.zeros(0)
     if len(fr) > 1:
         A = g["spectrum/amplitude_m"][:]

@@ -24,8 +24,8 @@ def _temperatures(ax, x, t, marker) -> None:
 
 
 def _has_drift(t) -> bool:
-    """A drift panel only where there is a drift: a tool tip and an axial DOF."""
-    return bool(np.isfinite(t.drift_m).any())
+    """A drift panel only where there is a drift: a tool tip."""
+    return bool(np.isfinite(t.drift_m).any() or (t.radial_m is not None and np.isfinite(t.radial_m).any()))
 
 
 def _preload_and_drift(axes, x, t, marker) -> None:
@@ -38,8 +38,19 @@ def _preload_and_drift(axes, x, t, marker) -> None:
     ax_p.set_ylabel("operating preload [N]\n(largest row thrust)")
     ax_p.legend(fontsize=8, loc="upper left")
     if len(axes) > 1:
-        axes[1].plot(x, 1e6 * t.drift_m, "-", color="tab:brown", marker=marker, ms=3)
-        axes[1].set_ylabel("tool tip axial drift [um]")
+        ax = axes[1]  # axial on the left scale, radial (often 10-100 x smaller) on its own right scale
+        lines = []
+        if np.isfinite(t.drift_m).any():
+            lines += ax.plot(x, 1e6 * t.drift_m, "-", color="tab:brown", marker=marker, ms=3, label="axial z (left)")
+        ax.set_ylabel("tool tip axial drift [um]\n(from the cold, unloaded spindle)")
+        if t.radial_m is not None and np.isfinite(t.radial_m).any():
+            ar = ax.twinx()
+            lines += ar.plot(x, 1e6 * t.radial_m[:, 0], "--", color="tab:olive", marker=marker, ms=3,
+                             label="radial x (right)")
+            lines += ar.plot(x, 1e6 * t.radial_m[:, 1], ":", color="tab:cyan", marker=marker, ms=3,
+                             label="radial y (right)")
+            ar.set_ylabel("radial [um]")
+        ax.legend(handles=lines, fontsize=8, ncols=3, loc="best")
 
 
 def speeds_figure(t, title: str = ""):
@@ -61,7 +72,8 @@ def speeds_figure(t, title: str = ""):
             ax.set_xlim(right=max(t.runaway_rpm * 1.03, ax.get_xlim()[1]))
     for ax in axes:
         ax.grid(True, alpha=0.3)
-    fixed_layout(fig, left_in=1.0, top_in=0.5, bottom_in=0.55, gap_in=0.25)
+    fixed_layout(fig, left_in=1.0, right_in=0.8 if _has_drift(t) else 0.25, top_in=0.5, bottom_in=0.55,
+                 gap_in=0.25)
     fig.suptitle(f"Thermal equilibrium against speed{': ' + title if title else ''}", x=0.02, ha="left",
                  fontsize=10)
     return fig
@@ -102,6 +114,7 @@ def warm_up_figure(t, title: str = ""):
     for i in starts:
         axes[0].annotate(f"{t.speed_rpm[i]:g} rpm", (minutes[i], 0.0), xycoords=("data", "axes fraction"),
                          xytext=(2, 3), textcoords="offset points", fontsize=7, color="0.3")
-    fixed_layout(fig, left_in=1.0, top_in=0.5, bottom_in=0.55, gap_in=0.25)
+    fixed_layout(fig, left_in=1.0, right_in=0.8 if _has_drift(t) else 0.25, top_in=0.5, bottom_in=0.55,
+                 gap_in=0.25)
     fig.suptitle(f"Warm-up{': ' + title if title else ''}", x=0.02, ha="left", fontsize=10)
     return fig

@@ -38,7 +38,7 @@ class WarmUpSeries:
 class ThermalTable:
     """What the figures draw, as plain arrays (sent to the figure process): along ``x`` (speeds [rpm] or
     times [s]), per bearing its rings' temperatures [degC] and its largest row thrust [N], the motor's,
-    the tool tip's axial drift [m], the speed at each point, the natural frequencies [Hz] and the minimum
+    the tool tip's axial and radial (x, y) drift [m], the speed at each point, the natural frequencies [Hz] and the minimum
     stable depth of cut [m] (warm-up)."""
 
     x: np.ndarray
@@ -53,6 +53,7 @@ class ThermalTable:
     frequency_hz: np.ndarray | None = None
     runaway_rpm: float | None = None
     min_depth_m: np.ndarray | None = None  # warm-up with a chatter section: the minimum stable depth
+    radial_m: np.ndarray | None = None  # [x, 2] the tool tip's radial drift x, y
 
 
 def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: bool = False,
@@ -69,7 +70,13 @@ def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: boo
         np.array([s.temperatures_C["motor:stator"] for s in states]) if motor else None,
         np.array([np.nan if s.tool_tip_axial_drift_m is None else s.tool_tip_axial_drift_m for s in states], float),
         None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm,
-        None if min_depth_m is None else np.asarray(min_depth_m, float))
+        None if min_depth_m is None else np.asarray(min_depth_m, float), _radial(states))
+
+
+def _radial(states) -> np.ndarray:
+    """The tool tip's radial drift (x, y) [m] of each state, NaN without a tool."""
+    return np.array([(np.nan, np.nan) if s.tool_tip_radial_m is None else s.tool_tip_radial_m for s in states],
+                    float).reshape(len(states), 2)
 
 
 def _max_thrust(report) -> float:
@@ -127,6 +134,10 @@ def _common(g: str, states, bearings, nodes, sources, boundaries, axis: str) -> 
                                     "housing's front face to the bearing"),
         f"{g}/tool_tip_axial_drift_m": Data(drift, "m", dims, "axial position change of the tool tip against the "
                                             "housing's front face (NaN: no tool or no axial DOF)", fill_nan=True),
+        f"{g}/tool_tip_radial_drift_m": Data(_radial(states), "m", dims + ("dof",), "the tool tip's radial "
+                                             "position (x, y) against the cold, unloaded spindle's axis: its static "
+                                             "deflection at the state (NaN: no tool)", fill_nan=True),
+        **labels(g, "dof", ("x", "y")),
         **{f"{g}/{p}_C": Data(v, "degC", dims + ("bearing",)) for p, v in parts.items()},
         **{f"{g}/bearing_stiffness_{k}_N_m": Data(v, "N/m", dims + ("bearing",), f"{k} stiffness of the set at its "
                                                   "operating point", fill_nan=True) for k, v in K.items()},

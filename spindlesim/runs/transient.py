@@ -102,11 +102,13 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     from ..output.transient_writer import write_transient
 
     d = loaded.deck
+    thermal_attrs: dict = {}
     if d.transient is not None and d.shaft is None and d.journal is None:
         rotor, settings = rig_setup(d.transient, opts)
     else:
         require_rotor(loaded, "transient")
         rotor, settings = rotor_setup(d, opts)
+        rotor, thermal_attrs = _at_thermal_equilibrium(loaded, rotor, settings)
 
     def report(fraction: float, t: float) -> None:
         if progress is not None:
@@ -119,7 +121,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
         log.warning("no linear modes at the static state: %s", exc)
         modal_hz = None
-    paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz)]
+    paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz, extra_attrs=thermal_attrs)]
     if plots_wanted(opts):
         op = operating_text(d)
         shown = tp.for_figures(res)  # what a figure process is sent: no rotor DOFs, no bearing forces
@@ -141,6 +143,22 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
         paths += _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
     log.info("transient run incomplete (%s); wrote what was computed", res.reason)
     raise IncompleteRun(f"transient run incomplete: {res.reason}", paths, interrupted=interrupted)
+
+
+def _at_thermal_equilibrium(loaded, rotor, settings):
+    """With ``spindle_thermal: {analyses: steady}``: the rotor on its bearings at the spindle's thermal
+    equilibrium of the run's (starting) speed, held through the run (temperatures change in minutes, a transient
+    lasts seconds), and the attributes that say so; otherwise the rotor as it is."""
+    points = operating_points(loaded)
+    if points.thermal is None:
+        return rotor, {}
+    from ..analysis.spindle_thermal import SpindleThermal
+
+    rpm = float(settings.speed_rpm[0]) if settings.speed_rpm is not None else float(rotor.speed_rpm)
+    state = points.thermal_state(rpm)
+    warm, _, _ = SpindleThermal(rotor, points.thermal.model, points.shaft).rotor_at(state.temperatures_C)
+    log.info("transient: bearings at the thermal equilibrium of %g rpm", rpm)
+    return warm, {"thermal_equilibrium_rpm": rpm}
 
 
 def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:

@@ -39,6 +39,7 @@ PROMISED = {
 #: thermal.h5 of a spindle's thermal model (deck section spindle_thermal)
 SPINDLE_THERMAL = ["/spindle_thermal/speed_rpm", "/spindle_thermal/temperature_C", "/spindle_thermal/heat_W",
                    "/spindle_thermal/row_thrust_N", "/spindle_thermal/tool_tip_axial_drift_m",
+                   "/spindle_thermal/tool_tip_radial_drift_m",
                    "/spindle_thermal/warm_up/time_s", "/spindle_thermal/warm_up/natural_frequency_hz"]
 #: quantities an isoviscous film without density and specific heat does not have (no heat balance)
 NO_HEAT_BALANCE = {"temperature_mean_C", "temperature_out_C", "oil_flow_m3_s", "reynolds_number"}

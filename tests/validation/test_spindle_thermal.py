@@ -179,3 +179,25 @@ def test_a_speed_sweep_starts_from_its_neighbours_extrapolated(spindle):
         assert swept.temperatures_C[name] == pytest.approx(cold.temperatures_C[name], abs=0.05), name
     assert _front_thrust(swept) == pytest.approx(_front_thrust(cold), rel=2e-3)
     assert swept.iterations < nearest.iterations < cold.iterations
+
+
+def test_radial_drift_is_the_tips_deflection_and_zero_without_loads(spindle):
+    """Item 6's radial drift: the tool tip's static deflection (x, y) at the state, the one the static analysis
+    gives on the bearings at those temperatures; the network is axisymmetric, so with no load and no gravity the
+    tip stays on the axis (0 to round-off) while it still drifts axially by the shaft's growth."""
+    from spindlesim.analysis.static import solve_static
+
+    s = spindle.steady(4000.0)
+    tip = spindle.rotor.tool_tip
+    warm_rotor = spindle.rotor_at(s.temperatures_C)[0]
+    ref = solve_static(warm_rotor, speed_rpm=4000.0)
+    assert s.tool_tip_radial_m == pytest.approx(tuple(ref.displacement_m[tip]), rel=1e-6, abs=1e-12)
+    assert abs(s.tool_tip_radial_m[0]) > 1e-7  # the deck's loads deflect it (about 1.6 um in x)
+
+    def unloaded(d):
+        d.pop("loads", None)
+        d["operating"]["gravity"] = False
+
+    free = _thermal(_deck(unloaded)).steady(4000.0)
+    assert max(abs(v) for v in free.tool_tip_radial_m) < 1e-12
+    assert abs(free.tool_tip_axial_drift_m) > 5e-6

@@ -223,3 +223,29 @@ def test_a_warm_up_that_runs_away_says_so(lathe):
     _, pts = lathe
     with pytest.raises(ThermalRunawayError, match=r"warm-up ran away at [0-9.]+ min \(4000 rpm\)"):
         pts.thermal.warm_up((0.0,), (4000.0,), 7200.0, samples=3)
+
+
+def test_the_transient_starts_from_the_thermal_equilibrium(lathe, tmp_path):
+    """Item 5: a transient of a deck whose analyses take the thermal state runs on the bearings of the thermal
+    equilibrium of its speed: its static start is that state's displacement, not the cold rotor's."""
+    import h5py
+    from click.testing import CliRunner
+
+    from spindlesim.cli import main
+
+    _, pts = lathe
+    res = CliRunner().invoke(main, ["transient", str(LATHE), "--duration", "0.004", "-o", str(tmp_path)])
+    assert res.exit_code == 0, res.output
+    assert "thermal equilibrium of 1200 rpm" in res.output
+    with h5py.File(tmp_path / "transient.h5") as f:
+        start = f["transient/static_displacement"][:]
+        assert float(f["transient"].attrs["thermal_equilibrium_rpm"]) == 1200.0
+    warm = pts.thermal_state(1200.0).operating.q[: start.size]
+    from spindlesim.analysis.operating import operating_state
+
+    cold = operating_state(pts.rotor, 1200.0, pts.shaft).q[: start.size]
+    scale = np.abs(warm).max()
+    # the same equilibrium to the loop's tolerance (0.01 K: this module solved neighbouring speeds first, the run
+    # starts from the ambient)
+    assert np.abs(start - warm).max() < 1e-4 * scale
+    assert np.abs(cold - warm).max() > 1e-3 * scale  # the thermal state is not the cold one here
