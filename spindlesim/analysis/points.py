@@ -66,6 +66,7 @@ class OperatingPoints:
         #: its speed: the bearings at the temperatures their heat and the motor's give (``spindle_thermal``)
         self.thermal = None
         self._thermal_states: dict[float, object] = {}
+        self._warm_T: dict | None = None  # analyses "warm_up": the temperatures of that instant, computed once
         if thermal_model is not None:
             from .spindle_thermal import SpindleThermal
 
@@ -93,13 +94,20 @@ class OperatingPoints:
 
     def thermal_state(self, speed_rpm: float):
         """The spindle's thermal equilibrium at ``speed_rpm`` (``spindle_thermal.ThermalState``), started from
-        the nearest speed solved; needs the thermal model."""
+        the nearest speed solved, or with ``analyses: warm_up`` the spindle at the temperatures of that instant
+        of the warm-up at ``speed_rpm``; needs the thermal model."""
         if self.thermal is None:
             raise ValueError("these operating points have no thermal model (deck section spindle_thermal)")
         rpm = float(speed_rpm)
         ts = self._thermal_states.get(rpm)
         if ts is None:
-            ts = self.thermal.steady(rpm, start=self._thermal_start(rpm))
+            at_s = self.thermal.model.analyses_at_s if self.thermal.model.analyses == "warm_up" else None
+            if at_s is not None:  # the temperatures of an instant of the warm-up, at this speed
+                if self._warm_T is None:
+                    self._warm_T = self.thermal.temperatures_at(at_s)
+                ts = self.thermal.at(self._warm_T, rpm, time_s=at_s)
+            else:
+                ts = self.thermal.steady(rpm, start=self._thermal_start(rpm))
             self._thermal_states[rpm] = ts
         return ts
 

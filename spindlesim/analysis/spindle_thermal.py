@@ -257,6 +257,21 @@ class SpindleThermal:
             f"outer ring {T.get(f'bearing:{hot}:outer', float('nan')):.0f} C{rise}): the arrangement cannot run "
             f"at this speed with this preload and cooling")
 
+    def at(self, T: dict[str, float], speed_rpm: float, time_s: float | None = None) -> ThermalState:
+        """The spindle with its parts at the temperatures ``T`` at ``speed_rpm``: the bearings at T, the rotor's
+        static state on them, their heat (no loop: an instant of a warm-up)."""
+        st, parts, offsets, reports = self._pass(T, speed_rpm, None)
+        return self._state(speed_rpm, T, st, parts, offsets, reports, 0, time_s=time_s)
+
+    def temperatures_at(self, time_s: float) -> dict[str, float]:
+        """The network's temperatures at ``time_s`` of the model's warm-up (the ambient at 0)."""
+        w = self.model.warm_up
+        if w is None:
+            raise ValueError("the spindle's thermal model has no warm-up")
+        if time_s <= 0.0:
+            return {n: self.model.layout.ambient_C for n in self._names}
+        return dict(self.warm_up(w.times_s, w.speeds_rpm, float(time_s), samples=2)[-1].temperatures_C)
+
     # ---- warm-up ---------------------------------------------------------------------------------------
     def warm_up(self, times_s, speeds_rpm, duration_s: float, samples: int = 25,
                 progress=None) -> tuple[ThermalState, ...]:
@@ -293,9 +308,7 @@ class SpindleThermal:
         out = []
         for k, t in enumerate(res.times_s):
             T = {n: float(res.temperatures_C[k, i]) for i, n in enumerate(self._names)}
-            w = prof(float(t))
-            st, parts, offsets, reports = self._pass(T, w / RPM, None)
-            out.append(self._state(w / RPM, T, st, parts, offsets, reports, 0, time_s=float(t)))
+            out.append(self.at(T, prof(float(t)) / RPM, time_s=float(t)))
             if progress is not None:
                 progress(k + 1, len(res.times_s))
         return tuple(out)

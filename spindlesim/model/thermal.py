@@ -61,9 +61,10 @@ class SpindleThermalModel:
     load_fraction: float
     tolerance_K: float
     bearings: tuple[str, ...]  # the rolling-bearing sets in the network, by name
-    analyses: str  # "none" | "steady"
+    analyses: str  # "none" | "steady" | "warm_up"
     speeds_rpm: tuple[float, ...]
     warm_up: WarmUpProfile | None = None
+    analyses_at_s: float | None = None  # analyses "warm_up": the instant of the warm-up they take [s]
 
 
 def build_spindle_thermal(deck: Any, rotor: Rotor) -> SpindleThermalModel | None:
@@ -110,7 +111,8 @@ def build_spindle_thermal(deck: Any, rotor: Rotor) -> SpindleThermalModel | None
                              60.0 * w.duration_min, w.samples)
     return SpindleThermalModel(layout, lubrication, sec.reference_C, 11.5e-6, mat.thermal_expansion_1_K,
                                load_fraction, sec.tolerance_K, tuple(s.name for s in sets), sec.analyses,
-                               tuple(sec.speeds_rpm), warm)
+                               tuple(sec.speeds_rpm), warm,
+                               None if sec.warm_up_at_min is None else 60.0 * sec.warm_up_at_min)
 
 
 def _bearing_set(e: Any, z_m: float) -> BearingSet:

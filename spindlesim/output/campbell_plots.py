@@ -176,14 +176,16 @@ def campbell_frozen_figure(r: CampbellResult, frozen: CampbellResult, frozen_rpm
     return fig
 
 
-def campbell_thermal_figure(r: CampbellResult, cold: CampbellResult, stiffness: dict):
+def campbell_thermal_figure(r: CampbellResult, cold: CampbellResult, stiffness: dict,
+                            label: str = "at thermal equilibrium"):
     """Natural frequencies (top) and the bearings' radial stiffness (bottom) against speed, at the spindle's
-    thermal equilibrium of every speed (solid) and with the bearings as assembled (dashed)."""
+    thermal equilibrium of every speed (or the temperatures ``label`` names; solid) and with the bearings as
+    assembled (dashed)."""
     fig = new_figure(9, 8, layout=None)
     ax1, ax2 = fig.subplots(2, 1, sharex=True, height_ratios=[3, 2])
     s = r.speed_rpm
     for k in range(r.frequency_hz.shape[1]):
-        ax1.plot(s, r.frequency_hz[:, k], color="tab:red", lw=1.2, label="at thermal equilibrium" if k == 0 else None)
+        ax1.plot(s, r.frequency_hz[:, k], color="tab:red", lw=1.2, label=label if k == 0 else None)
         ax1.plot(s, cold.frequency_hz[:, k], color="tab:blue", lw=1.0, ls="--", label="bearings cold" if k == 0 else None)
     ax1.plot(s, s / 60.0, "k:", lw=1, label="1x")
     top = np.nanmax(np.concatenate([r.frequency_hz.ravel(), cold.frequency_hz.ravel()]))

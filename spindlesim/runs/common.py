@@ -39,7 +39,7 @@ def operating_points(loaded):
         _POINTS.clear()
         rotor = build_rotor(loaded.deck)
         model = build_spindle_thermal(loaded.deck, rotor)
-        thermal = model if model is not None and model.analyses == "steady" else None
+        thermal = model if model is not None and model.analyses != "none" else None
         got = (loaded, OperatingPoints(rotor, thermal))
         _POINTS[id(loaded)] = got
     return got[1]

@@ -93,7 +93,10 @@ def run_campbell(loaded, outdir, run, opts, progress):
         if cold is not None:
             from ..output.campbell_plots import campbell_thermal_figure
 
-            paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, cold, stiffness))
+            m = points.thermal.model
+            label = (f"at the temperatures of the warm-up at {m.analyses_at_s / 60.0:g} min"
+                     if m.analyses == "warm_up" else "at thermal equilibrium")
+            paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, cold, stiffness, label))
     if res.incomplete_reason:
         from .status import IncompleteRun
 

@@ -41,8 +41,10 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     from ..model.thermal import build_spindle_thermal
 
     model = build_spindle_thermal(d, points.rotor)
-    if points.thermal is None:  # the deck's analyses do not take the thermal state: a model of its own here
-        points = OperatingPoints(points.rotor, model)
+    if points.thermal is None or model.analyses != "steady":  # the equilibria the command lists: a model of its own
+        import dataclasses
+
+        points = OperatingPoints(points.rotor, dataclasses.replace(model, analyses="steady"))
     speeds = [float(opts["speed_rpm"])] if opts.get("speed_rpm") is not None else \
         sorted(model.speeds_rpm) or [float(d.operating.speed_rpm)]
     states, runaway = [], None

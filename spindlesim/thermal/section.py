@@ -202,12 +202,30 @@ class SpindleThermalSection(DeckModel):
     """Coolant channels in the housing. None: the housing is cooled by the ambient air only."""
     motor: Optional[Motor] = None
     """Built-in motor. None: a belt- or coupling-driven spindle (no motor heat)."""
-    analyses: Literal["none", "steady"] = "none"
-    """steady: static, modal, campbell, frf, unbalance and chatter take the bearings at the thermal
-    equilibrium of each speed; none: the bearings as assembled (cold)."""
+    analyses: Literal["none", "steady", "warm_up"] = "none"
+    """steady: static, modal, campbell, frf, unbalance, chatter and transient take the bearings at the thermal
+    equilibrium of each speed; warm_up: at the temperatures the `warm_up` has reached at `warm_up_at_min` (the
+    bearings at those temperatures at each analysis's speed); none: the bearings as assembled (cold)."""
+    warm_up_at_min: Optional[Annotated[float, Field(ge=0.0, le=1e5)]] = None
+    """With `analyses: warm_up`: the time of the warm-up whose temperatures the analyses take (0: the cold
+    start)."""
     speeds_rpm: Annotated[list[Annotated[float, Field(ge=0.0, le=1e6)]], Field(min_length=1, max_length=200)] = []
     """Speeds `spindlesim thermal` solves the thermal equilibrium at. Empty: the operating speed."""
     warm_up: Optional[WarmUp] = None
     """A warm-up for `spindlesim thermal` (temperatures, preload, tool-tip drift and modes in time)."""
     tolerance_K: Annotated[float, Field(gt=0.0, le=10.0)] = 0.01
     """Convergence of the coupled steady state: the largest temperature change between two iterations."""
+
+    @model_validator(mode="after")
+    def _warm_up_instant(self) -> "SpindleThermalSection":
+        if self.analyses == "warm_up":
+            if self.warm_up is None:
+                raise ValueError("analyses: warm_up needs the warm_up section (the speed steps)")
+            if self.warm_up_at_min is None:
+                raise ValueError("analyses: warm_up needs warm_up_at_min (the instant the analyses take)")
+            if self.warm_up_at_min > self.warm_up.duration_min:
+                raise ValueError(f"warm_up_at_min {self.warm_up_at_min:g} lies beyond the warm-up's duration_min "
+                                 f"{self.warm_up.duration_min:g}")
+        elif self.warm_up_at_min is not None:
+            raise ValueError("warm_up_at_min is read with analyses: warm_up only")
+        return self

@@ -249,3 +249,49 @@ def test_the_transient_starts_from_the_thermal_equilibrium(lathe, tmp_path):
     # starts from the ambient)
     assert np.abs(start - warm).max() < 1e-4 * scale
     assert np.abs(cold - warm).max() > 1e-3 * scale  # the thermal state is not the cold one here
+
+
+def test_analyses_at_an_instant_of_the_warm_up(tmp_path):
+    """Item 5's "or a time in the warm-up": with `analyses: warm_up` and `warm_up_at_min`, every analysis takes
+    the temperatures the warm-up has reached then (at its own speed); at 0 min these are the cold spindle's, so
+    the static state is the rotor without a thermal model; at 45 min (1000 rpm since 30 min) the DTRB's preload
+    is that of the warm-up's instant, between the cold one and the 1000 rpm equilibrium."""
+    from spindlesim.analysis.operating import operating_state
+    from spindlesim.runs.common import operating_points
+
+    def deck(at_min):
+        d = _lathe_doc()
+        d["spindle_thermal"]["analyses"] = "warm_up"
+        d["spindle_thermal"]["warm_up_at_min"] = at_min
+        path = tmp_path / f"lathe_{at_min:g}.yaml"
+        path.write_text(yaml.safe_dump(d))
+        return load_deck(path)
+
+    pts0 = operating_points(deck(0.0))
+    cold = operating_state(pts0.rotor, 1000.0, pts0.shaft)
+    assert np.allclose(pts0.state(1000.0).q, cold.q, rtol=0, atol=1e-12)
+    pts = operating_points(deck(45.0))
+    ts = pts.thermal_state(1000.0)
+    assert ts.time_s == 2700.0
+    w = pts.thermal.model.warm_up
+    ref = pts.thermal.warm_up(w.times_s, w.speeds_rpm, 2700.0, samples=2)[-1]  # the warm-up itself, to 45 min
+    assert ts.temperatures_C == pytest.approx(ref.temperatures_C, abs=1e-9)
+
+    def preload(state):
+        b = next(b for b in state.bearings if b.name == "front_dtrb")
+        return getattr(b, "inner", b).preload_m
+
+    steady = pts.thermal.steady(1000.0)
+    assert preload(cold) < preload(ts.operating) < preload(steady.operating)
+
+
+def test_a_warm_up_instant_needs_its_warm_up():
+    from spindlesim.deck import DeckError, parse_deck
+
+    d = _lathe_doc()
+    d["spindle_thermal"]["analyses"] = "warm_up"
+    with pytest.raises(DeckError, match="warm_up_at_min"):
+        parse_deck(yaml.safe_dump(d), "lathe.yaml")
+    d["spindle_thermal"]["warm_up_at_min"] = 500.0
+    with pytest.raises(DeckError, match="beyond the warm-up's duration_min 120"):
+        parse_deck(yaml.safe_dump(d), "lathe.yaml")
