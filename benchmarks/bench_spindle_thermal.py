@@ -7,7 +7,9 @@
   runaway near 14,000 rpm), side by side with the same diagram with speed effects only (the bearings'
   quasi-static states re-solved at every speed at the assembly temperature): target within 3x.
 
-Deck: decks/milling_spindle.yaml (section spindle_thermal: housing, cooling jacket, motor, oil-air).
+Deck: decks/milling_spindle.yaml (section spindle_thermal: housing, cooling jacket, motor, oil-air); and the
+steady state of decks/lathe_headstock.yaml (a DTRB and a cylindrical roller bearing, Palmgren's heat) at
+1500 rpm, the same target.
 
     python benchmarks/bench_spindle_thermal.py [--repeat 3]
 """
@@ -29,6 +31,7 @@ from spindlesim.model.build import build_rotor
 from spindlesim.model.thermal import build_spindle_thermal
 
 DECK = Path(__file__).parents[1] / "decks" / "milling_spindle.yaml"
+LATHE = Path(__file__).parents[1] / "decks" / "lathe_headstock.yaml"
 STEPS_S = (0.0, 1440.0, 2880.0, 4320.0, 5760.0)
 STEPS_RPM = (4000.0, 8000.0, 12000.0, 8000.0, 0.0)
 TARGETS = {"steady": 0.2, "warm-up": 10.0, "ratio": 3.0}
@@ -78,6 +81,14 @@ def main() -> None:
     ratio = w1 / w0
     _row("Campbell, 50 speeds, thermal equilibrium at each", w1, c1,
          note=f"ratio {ratio:.2f} (target {TARGETS['ratio']:g}: {'meets' if ratio <= TARGETS['ratio'] else 'MISSES'})")
+
+    lathe = load_deck(LATHE).deck
+    lathe_rotor = build_rotor(lathe)
+    lathe_model = build_spindle_thermal(lathe, lathe_rotor)
+    SpindleThermal(lathe_rotor, lathe_model).steady(500.0)
+    w, c, st = _median(lambda: SpindleThermal(lathe_rotor, lathe_model).steady(1500.0), r)
+    _row("lathe headstock (DTRB + cylindrical roller) steady at 1500 rpm", w, c, TARGETS["steady"],
+         f"{st.iterations} passes, {st.total_heat_W:.0f} W")
 
 
 if __name__ == "__main__":
