@@ -44,7 +44,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
-from typing import Annotated, Literal, Mapping, Optional, Union
+from typing import TYPE_CHECKING, Annotated, Literal, Mapping, Optional, Union
 
 import numpy as np
 from pydantic import Discriminator, Field, Tag, model_validator
@@ -53,7 +53,9 @@ from ..fields import DeckModel, PositiveFloat, Range
 from .frf import Mode, ToolPointFrf
 from .process import MillingProcess, TurningProcess
 from .readers import combine_frfs, read_frf
-from .state_space import ToolPointModel
+
+if TYPE_CHECKING:  # the deck layer imports this module: scipy.linalg only where a model is built
+    from .state_space import ToolPointModel
 
 __all__ = ["ChatterSection", "ChatterSpec", "build_chatter"]
 
@@ -275,6 +277,8 @@ def _tool(frf, base_dir: Path):
         return "rotor", None
     if isinstance(frf, FrfModes):
         modes = [Mode(m.direction, m.frequency_hz, m.damping_ratio, m.stiffness_N_m) for m in frf.modes]
+        from .state_space import ToolPointModel
+
         return "modes", ToolPointModel.from_modes(modes, "deck modes")
     entries = [frf.file] if isinstance(frf, FrfFile) else frf.files
     parts = []
