@@ -78,3 +78,22 @@ def test_a_state_is_kept_and_a_sweep_starts_each_speed_from_its_neighbour():
     sweep = pts.along(np.array([0.0, 1500.0, 3000.0]))
     assert pts.solves == 3 and sweep.states[2] is a  # 3000 rpm was known
     assert not sweep.stopped and sweep.first == 0
+
+
+def test_the_rotor_statics_is_the_damped_newton_of_the_statics_and_names_what_failed(monkeypatch):
+    """The rotor's equilibrium goes through ``bearings.statics.damped_newton``; when it fails the message
+    says at which speed, with which bearings and after how many iterations."""
+    rotor = build_rotor(default_deck("milling_spindle").deck)
+    calls = []
+    real = operating.damped_newton
+
+    def counted(*args, **kwargs):
+        calls.append(kwargs.get("lam0"))
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(operating, "damped_newton", counted)
+    st = operating.operating_state(rotor, 12000.0)
+    assert calls and st.newton_iterations > 0
+    with pytest.raises(operating.EquilibriumError, match=r"at 12000 rpm .*damped Newton.*\(front, rear.*1 of 1 "
+                                                         r"iterations, residual"):
+        operating.operating_state(rotor, 12000.0, max_iter=1)
