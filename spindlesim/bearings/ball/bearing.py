@@ -49,7 +49,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..base import FIVE, BearingBase, shaft_angle
-from . import checks
+from . import checks, floating
 from . import equilibrium as eq
 from . import kernel as kn
 from .equilibrium import FREE, BallEquilibriumError, Held, Work
@@ -300,7 +300,7 @@ class BallBearing(BearingBase):
             ev = self._rows(q, om, phi, np.zeros(rows), all_rows, work)
             return _SetEval(ev.f_rows.sum(axis=0), ev.K_rows.sum(axis=0), ev, 0.0)
         fl = np.flatnonzero(self._floating)
-        shift, evf = self._float_solve(q, om, phi, fl, work)
+        shift, evf = floating.shift(self, q, om, phi, fl, work)
         w = np.zeros(rows)
         w[fl] = shift
         fixed = np.flatnonzero(~self._floating)
@@ -311,46 +311,6 @@ class BallBearing(BearingBase):
         Kc[:, 2] = 0.0
         K = Kc + (ev.K_rows.sum(axis=0) - Kg)
         return _SetEval(ev.f_rows.sum(axis=0), K, ev, shift)
-
-    def _float_solve(self, q, om, phi, fl, work: Work) -> tuple[float, _RowEval]:
-        """Axial shift w (along z) of the floating outer rings with their thrust = axial_N."""
-        g = self.geometry
-        Fs, sg = self.preload.axial_N, self._s_float
-        rows = g.rows
-
-        def thrust(v):  # v: approach in the floating rows' direction, w = -sg v
-            w = np.zeros(rows)
-            w[fl] = -sg * v
-            ev = self._rows(q, om, phi, w, fl, work)
-            return -sg * ev.f_rows[:, 2].sum(), ev.K_rows[:, 2, 2].sum(), ev
-
-        if work.shift is None:
-            per_ball = Fs / (fl.size * g.balls * max(math.sin(g.mounted_angle_rad), 0.05))
-            v = (per_ball / g.K_series) ** (2.0 / 3.0) / max(math.sin(g.mounted_angle_rad), 0.05) - sg * q[2]
-        else:
-            v = work.shift - sg * q[2]
-        lo = hi = None
-        for _ in range(200):
-            h, k, ev = thrust(v)
-            r = h - Fs
-            if abs(r) <= 1e-12 * Fs:
-                work.shift = v + sg * q[2]
-                return -sg * v, ev
-            if r < 0.0:
-                lo = v
-            else:
-                hi = v
-            vn = v - r / k if k > 0.0 else v + max(1e-6, abs(v))
-            if lo is not None and hi is not None and not lo < vn < hi:
-                vn = 0.5 * (lo + hi)
-            if lo is not None and hi is not None and hi - lo <= 1e-16 * max(abs(v), 1e-3):
-                work.shift = v + sg * q[2]
-                return -sg * v, ev
-            v = vn
-        raise BallEquilibriumError(
-            f"bearing {self.name!r}: floating outer ring(s) found no axial position carrying the spring "
-            f"force {Fs:g} N (Newton with bisection, 200 iterations; residual {r:.3g} N) at "
-            f"{om * 30 / math.pi:.6g} rpm, q = {np.round(np.asarray(q) * 1e6, 4).tolist()} (um, urad)")
 
     # ---- the contract ---------------------------------------------------------------------------
     def force_and_tangent(self, q, v, t, speed, angle=None):
