@@ -180,7 +180,8 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
         elif start is not None and outer == 0:
             # the affine start is exact when the loads the bearings were frozen at are the answer (a
             # neighbouring speed's loads often are): better than the neighbour's displacements
-            q, internal, K_lin, _ = _affine_start(frozen, idx, K_s, Q, loads, speed, start.coefficients)
+            q, internal, K_lin, _ = _affine_start(frozen, idx, K_s, Q, loads, speed, start.coefficients,
+                                                  _displacements(start.q, start.internal, idx))
         q, internal, f, its = _newton(rotor, frozen, idx, K_s, Q, q, internal, speed, tol, max_iter, np.diag(K_lin))
         total += its
         new = [-fb[: len(i)] for fb, i in zip(f, idx)]
@@ -193,22 +194,31 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
             break
     else:
         log.warning("bearing loads still change by %.2g after 10 operating-point updates", change)
-    if coef is None:
-        coef = [b.linearized(speed, w) for b, w in zip(frozen, loads)] if linearize else [None] * len(frozen)
+    if coef is None and linearize:  # each bearing from its displacement in the state (the answer when the
+        # loads are those it carries, as they are to LOAD_TOL)
+        coef = [b.linearized(speed, w, start=d) for b, w, d in zip(frozen, loads, _displacements(q, internal, idx))]
+    elif coef is None:
+        coef = [None] * len(frozen)
     return OperatingState(speed, q, tuple(internal), frozen, tuple(new), tuple(loads), tuple(coef), idx, Q, shaft,
                           total)
 
 
-def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None):
+def _displacements(q, internal, idx) -> list[np.ndarray]:
+    """Each bearing's displacement in a state: its node DOFs of q, then its internal DOFs."""
+    return [np.concatenate([q[i], z]) for i, z in zip(idx, internal)]
+
+
+def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None, near=None):
     """Start of Newton: each bearing replaced by f_b = -W_b - K_b (q_b - d_b) about the displacement
-    d_b that carries its estimated load W_b (``static_displacement``): exact when the loads are,
-    whatever K_b; ``near_coef`` (a neighbouring speed's coefficients) saves the ``linearized`` calls."""
+    d_b that carries its estimated load W_b (``static_displacement``, from the neighbouring speed's
+    displacement ``near`` when given): exact when the loads are, whatever K_b; ``near_coef`` (a
+    neighbouring speed's coefficients) saves the ``linearized`` calls, which otherwise start from d_b."""
     K, r = K_s.copy(), Q.copy()
     internal, coef = [], []
     for k, (b, i, w) in enumerate(zip(bearings, idx, loads)):
-        kb, cb = b.linearized(speed, w) if near_coef is None else near_coef[k]
+        d = b.static_displacement(speed, w, start=None if near is None else near[k])
+        kb, cb = b.linearized(speed, w, start=d) if near_coef is None else near_coef[k]
         coef.append((kb, cb))
-        d = b.static_displacement(speed, w)
         K[np.ix_(i, i)] += kb
         r[i] += kb @ d[: len(i)] - w
         internal.append(np.asarray(d[len(i):], float))

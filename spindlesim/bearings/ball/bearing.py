@@ -319,29 +319,36 @@ class BallBearing(BearingBase):
         ev = self._evaluate(qq, float(speed), self.cage_angle(shaft_angle(speed, t, angle)))
         return ev.f.copy(), ev.K.copy(), np.zeros((5, 5))
 
-    def linearized(self, speed, static_load=None):
+    def linearized(self, speed, static_load=None, start=None):
         """(K, C) at the equilibrium under ``static_load`` (5 entries; None = 0), K averaged over
-        ``pitch_samples`` cage positions within one ball pitch; C = 0."""
-        load = np.zeros(5)
-        if static_load is not None:
-            sl = np.asarray(static_load, float)
-            load[: sl.size] = sl
+        ``pitch_samples`` cage positions within one ball pitch, the first from ``start`` (the contract's;
+        default the unloaded ring), each next from the one before; C = 0."""
+        load = _five(static_load)
         pitch = 2.0 * math.pi / self.geometry.balls
-        K = np.zeros((5, 5))
-        q, work = None, Work(self)  # each cage position starts from the one before
+        K, work = np.zeros((5, 5)), Work(self)
+        q, ev = self._started(load, float(speed), start, work)
         for m in range(self.pitch_samples):
-            phi = m * pitch / self.pitch_samples
-            q, ev, _ = self._equilibrium(load, float(speed), phi, q, work=work)
+            if m:
+                q, ev, _ = self._equilibrium(load, float(speed), m * pitch / self.pitch_samples, q, work=work)
             K += ev.K
         return K / self.pitch_samples, np.zeros((5, 5))
 
-    def static_displacement(self, speed, static_load=None) -> np.ndarray:
-        """Inner-ring displacement carrying ``static_load`` at cage angle 0 (the contract)."""
-        load = np.zeros(5)
-        if static_load is not None:
-            sl = np.asarray(static_load, float)
-            load[: sl.size] = sl
-        return self._equilibrium(load, float(speed), 0.0)[0].copy()
+    def static_displacement(self, speed, static_load=None, start=None) -> np.ndarray:
+        """Inner-ring displacement carrying ``static_load`` at cage angle 0, from ``start`` (the contract)."""
+        return self._started(_five(static_load), float(speed), start, Work(self))[0].copy()
+
+    def _started(self, load, speed: float, start, work: Work):
+        """(q, evaluation) of the equilibrium at cage angle 0 from ``start`` (None: the unloaded ring), or from
+        the unloaded ring when Newton fails from there: the same root to the set tolerance."""
+        if start is not None:
+            q0 = np.array(start, float)[:5]
+            if self.fully_floating:
+                q0[2] = 0.0  # not solved for (the spring carries z): as from the unloaded ring
+            try:
+                return self._equilibrium(load, speed, 0.0, q0, work=work)[:2]
+            except BallEquilibriumError:
+                work.forget()
+        return self._equilibrium(load, speed, 0.0, work=work)[:2]
 
     # ---- equilibrium and results ---------------------------------------------------------------
     def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE,
@@ -431,6 +438,15 @@ class BallBearing(BearingBase):
             for lam, Q in ((lam_o, r.Qo), (lam_i, r.Qi)):
                 out = np.maximum(out, np.where((r.Mg != 0.0) & (lam > 0.0), np.abs(lam * r.Mg / D) / Q, 0.0))
         return out
+
+
+def _five(static_load) -> np.ndarray:
+    """The contract's ``static_load`` on (x, y, z, theta_x, theta_y), zeros where not given."""
+    load = np.zeros(5)
+    if static_load is not None:
+        sl = np.asarray(static_load, float)
+        load[: sl.size] = sl
+    return load
 
 
 def _race_label(race: np.ndarray) -> str:
