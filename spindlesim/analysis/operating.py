@@ -7,7 +7,7 @@ bearing's internal DOFs z_b::
     K_s(Omega) q = Q + sum_b f_b(q_b, z_b),   0 = f_b,internal(q_b, z_b)
 
 solved by the damped Newton of the statics (``bearings.statics.damped_newton``) with the bearings'
-tangents (``force_and_tangent``, the contract): undamped at first, a step that raises |R| halved (up to 30
+tangents (``force_and_tangent``, the contract): undamped at first, a step that raises |R| halved (up to 29
 times) before the Levenberg-Marquardt damping grows (contact laws have zero stiffness at first touch), and
 a position a bearing refuses (a journal at the bore) a refused step.
 
