@@ -8,7 +8,8 @@ preload 21 um).  Timings are the best of --repeat batches of --number calls, wal
 - "state, warm": the same with the previous call's ball centres as starts, passed in (a ``Work``: a sweep);
 - "force_and_tangent": reaction and 5x5 tangent at one displacement (transient / static solver use; every
   ball from its built-in start);
-- "linearized": the contract's pitch-averaged tangent (4 cage positions, 4 equilibria).
+- "linearized": the contract's pitch-averaged tangent (4 cage positions, 4 equilibria);
+- "spring preload": the state of the pair with one floating row (300 N), cold, and the evaluations of its rows.
 
 Then studies: speed effects under position and spring preload, the model options, the size of the
 contact-angle dependence of the Hertz constants that the model neglects, the sensitivity to the
@@ -27,7 +28,7 @@ import time
 import numpy as np
 import yaml
 
-from spindlesim.bearings.ball.bearing import Work
+from spindlesim.bearings.ball.bearing import BallBearing, Work
 from spindlesim.bearings.ball import BallSection, default_deck_text
 from spindlesim.bearings.ball import kernel as kn
 from spindlesim.bearings.ball.section import build
@@ -69,10 +70,33 @@ def timings(repeat: int, number: int) -> None:
         print(f"{'force_and_tangent cold, ' + model + ', 15000 rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
         wall, cpu = best(lambda: b.linearized(15000 * RPM, LOAD), repeat, max(1, number // 5))
         print(f"{'linearized (4 cage positions), ' + model:44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}")
+    spring_study(repeat, number)
     b = build(section())
     t = time.perf_counter()
     speed_sweep(b, np.linspace(0, 20000, 21) * RPM, LOAD)
     print(f"{'speed sweep 0-20000 rpm, 21 points':44s} {(time.perf_counter() - t) * 1e3:8.3f}")
+
+
+def spring_study(repeat: int, number: int) -> None:
+    """A spring-preloaded pair (one floating row, the rear set of a motor spindle): the state, cold, and the
+    evaluations of its rows it takes (the floating row's shift is solved at every evaluation of the set)."""
+    b = build(section(preload={"kind": "spring", "axial_N": 300.0, "floating": "-z"}))
+    rows, real = [0], BallBearing._rows
+
+    def counted(self, *args, **kwargs):
+        rows[0] += 1
+        return real(self, *args, **kwargs)
+
+    for rpm in (0.0, 10000.0, 20000.0):
+        w = rpm * RPM
+        b.solve(LOAD, w)
+        BallBearing._rows = counted
+        rows[0] = 0
+        b.solve(LOAD, w)
+        BallBearing._rows = real
+        wall, cpu = best(lambda: b.solve(LOAD, w), repeat, number)
+        print(f"{'state+tangent cold, spring preload, ' + f'{rpm:.0f} rpm':44s} {wall * 1e3:8.3f} {cpu * 1e3:8.3f}  "
+              f"{rows[0]} row evaluations")
 
 
 def speed_study() -> None:

@@ -6,9 +6,10 @@ bearing's internal DOFs z_b::
 
     K_s(Omega) q = Q + sum_b f_b(q_b, z_b),   0 = f_b,internal(q_b, z_b)
 
-solved by Newton's method with the bearings' tangents (``force_and_tangent``, the contract),
-Levenberg-Marquardt damping (contact laws have zero stiffness at first touch) and backtracking
-when a bearing refuses a position (a journal at the bore).
+solved by the damped Newton of the statics (``bearings.statics.damped_newton``) with the bearings'
+tangents (``force_and_tangent``, the contract): undamped at first, a step that raises |R| halved (up to 29
+times) before the Levenberg-Marquardt damping grows (contact laws have zero stiffness at first touch), and
+a position a bearing refuses (a journal at the bore) a refused step.
 
 The operating point of each bearing (a fluid film's thermal-equilibrium viscosity) depends on
 its load, which the equilibrium gives: the loads start from a solve on stiff supports (exact
@@ -29,6 +30,7 @@ from functools import cached_property
 import numpy as np
 import scipy.linalg as sla
 
+from ..bearings.statics import damped_newton
 from ..fe.assembly import ShaftMatrices, assemble_shaft, load_vector
 from ..model.rotor import Rotor
 
@@ -178,7 +180,8 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
         elif start is not None and outer == 0:
             # the affine start is exact when the loads the bearings were frozen at are the answer (a
             # neighbouring speed's loads often are): better than the neighbour's displacements
-            q, internal, K_lin, _ = _affine_start(frozen, idx, K_s, Q, loads, speed, start.coefficients)
+            q, internal, K_lin, _ = _affine_start(frozen, idx, K_s, Q, loads, speed, start.coefficients,
+                                                  _displacements(start.q, start.internal, idx))
         q, internal, f, its = _newton(rotor, frozen, idx, K_s, Q, q, internal, speed, tol, max_iter, np.diag(K_lin))
         total += its
         new = [-fb[: len(i)] for fb, i in zip(f, idx)]
@@ -191,22 +194,31 @@ def operating_state(rotor: Rotor, speed_rpm: float | None = None, shaft: ShaftMa
             break
     else:
         log.warning("bearing loads still change by %.2g after 10 operating-point updates", change)
-    if coef is None:
-        coef = [b.linearized(speed, w) for b, w in zip(frozen, loads)] if linearize else [None] * len(frozen)
+    if coef is None and linearize:  # each bearing from its displacement in the state (the answer when the
+        # loads are those it carries, as they are to LOAD_TOL)
+        coef = [b.linearized(speed, w, start=d) for b, w, d in zip(frozen, loads, _displacements(q, internal, idx))]
+    elif coef is None:
+        coef = [None] * len(frozen)
     return OperatingState(speed, q, tuple(internal), frozen, tuple(new), tuple(loads), tuple(coef), idx, Q, shaft,
                           total)
 
 
-def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None):
+def _displacements(q, internal, idx) -> list[np.ndarray]:
+    """Each bearing's displacement in a state: its node DOFs of q, then its internal DOFs."""
+    return [np.concatenate([q[i], z]) for i, z in zip(idx, internal)]
+
+
+def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None, near=None):
     """Start of Newton: each bearing replaced by f_b = -W_b - K_b (q_b - d_b) about the displacement
-    d_b that carries its estimated load W_b (``static_displacement``): exact when the loads are,
-    whatever K_b; ``near_coef`` (a neighbouring speed's coefficients) saves the ``linearized`` calls."""
+    d_b that carries its estimated load W_b (``static_displacement``, from the neighbouring speed's
+    displacement ``near`` when given): exact when the loads are, whatever K_b; ``near_coef`` (a
+    neighbouring speed's coefficients) saves the ``linearized`` calls, which otherwise start from d_b."""
     K, r = K_s.copy(), Q.copy()
     internal, coef = [], []
     for k, (b, i, w) in enumerate(zip(bearings, idx, loads)):
-        kb, cb = b.linearized(speed, w) if near_coef is None else near_coef[k]
+        d = b.static_displacement(speed, w, start=None if near is None else near[k])
+        kb, cb = b.linearized(speed, w, start=d) if near_coef is None else near_coef[k]
         coef.append((kb, cb))
-        d = b.static_displacement(speed, w)
         K[np.ix_(i, i)] += kb
         r[i] += kb @ d[: len(i)] - w
         internal.append(np.asarray(d[len(i):], float))
@@ -217,17 +229,17 @@ def _affine_start(bearings, idx, K_s, Q, loads, speed, near_coef=None):
 
 
 def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_diag):
-    """Damped Newton on [q, z_1, z_2, ...] (module note); ``k_diag`` (rotor DOFs) scales the damping
-    where the tangent has no stiffness yet (a journal in its clearance)."""
+    """The damped Newton of the statics (``bearings.statics.damped_newton``) on [q, z_1, z_2, ...] (module
+    note); ``k_diag`` (rotor DOFs) scales the damping where the tangent has no stiffness yet (a journal in
+    its clearance)."""
     n = q.size
     sizes = [z.size for z in internal]
     offs = np.cumsum([n] + sizes)
     N = int(offs[-1])
-    x = np.concatenate([q] + list(internal))
     gidx = [np.concatenate([i, np.arange(o - s, o)]) for i, s, o in zip(idx, sizes, offs[1:])]
     f_scale = max(float(np.max(np.abs(Q))) if Q.size else 0.0, 1.0)
 
-    def residual(x):
+    def evaluate(x):
         R = np.zeros(N)
         R[:n] = Q - K_s @ x[:n]
         J = np.zeros((N, N))
@@ -238,61 +250,43 @@ def _newton(rotor, bearings, idx, K_s, Q, q, internal, speed, tol, max_iter, k_d
             R[gi] += fb
             J[np.ix_(gi, gi)] += kt
             forces.append(fb)
-        return R, J, forces
+        return R, J, (x, forces)
 
-    R, J, forces = residual(x)
-    rn = float(np.linalg.norm(R))
-    if np.max(np.abs(R)) <= 1e-3 * tol * _force_scale(f_scale, forces):  # the start is the solution
-        return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, 0
-    lam = 0.0
-    dj = np.abs(np.diag(J))
-    dj[:n] = np.maximum(dj[:n], np.abs(k_diag))
-    dscale = np.maximum(dj, 1e-12 * max(float(np.max(dj)), 1.0))
-    for it in range(1, max_iter + 1):
-        try:
-            dx = np.linalg.solve(J + lam * np.diag(dscale), R)
-        except np.linalg.LinAlgError:
-            lam = max(lam * 10.0, 1e-6)
-            continue
-        alpha, accepted = 1.0, False
-        for _ in range(30):
-            trial = x + alpha * dx
-            try:
-                Rt, Jt, ft = residual(trial)
-            except (ValueError, ArithmeticError) as exc:  # e.g. a journal pushed to the bore
-                log.debug("Newton step refused (%s); halving", exc)
-                alpha *= 0.5
-                continue
-            rt = np.linalg.norm(Rt) if np.all(np.isfinite(Rt)) else np.inf
-            # a decrease, or (damped steps) no increase: a journal crossing its clearance sees no force yet
-            if rt <= (1.0 - 1e-4 * alpha) * rn + 1e-14 * f_scale or (lam > 0 and rt <= rn):
-                accepted = True
-                break
-            alpha *= 0.5
-        if not accepted:
-            if np.max(np.abs(R)) <= 1e-6 * _force_scale(f_scale, forces):  # at the round-off floor
-                return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it
-            if lam < 1e8:
-                lam = max(lam * 10.0, 1e-6)
-                continue
-            break
-        step = alpha * dx
-        rn_old = rn
-        x, R, J, forces, rn = trial, Rt, Jt, ft, float(np.linalg.norm(Rt))
-        if rn > 0.5 * rn_old and np.max(np.abs(R)) <= 1e-7 * _force_scale(f_scale, forces):
-            return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it  # at the round-off floor
-        lam = lam * 0.1 if lam > 1e-12 else 0.0
-        # converged: the residual at round-off and the last step small (a Newton step of 1e-6 of the
-        # displacement with the residual already below tol leaves the next one at ~1e-12: not worth a solve)
-        small_step = np.max(np.abs(step)) <= 1e-6 * max(float(np.max(np.abs(x))), 1e-12)
+    last = [None, np.inf]  # the point converged() saw last and its |R|: the step since, the stall
+
+    def converged(R, data):
+        x, forces = data
         scale = _force_scale(f_scale, forces)
-        if np.max(np.abs(R)) <= tol * scale and (small_step or np.max(np.abs(R)) <= 1e-3 * tol * scale):
-            return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, it
+        r, rn = float(np.max(np.abs(R))), float(np.linalg.norm(R))
+        before, rn_before = last
+        last[:] = data, rn
+        if before is None or before is data:  # the start, or the same point after a refused step
+            return r <= 1e-3 * tol * scale
+        if rn > 0.5 * rn_before and r <= 1e-7 * scale:
+            return True  # a step taken that hardly lowered a residual at the round-off floor
+        # the residual at round-off and the last step small (a Newton step of 1e-6 of the displacement with
+        # the residual already below tol leaves the next one at ~1e-12: not worth a solve)
+        small_step = np.max(np.abs(x - before[0])) <= 1e-6 * max(float(np.max(np.abs(x))), 1e-12)
+        return r <= tol * scale and (small_step or r <= 1e-3 * tol * scale)
+
+    x0 = np.concatenate([q] + list(internal))
+    first = evaluate(x0)
+    dj = np.abs(np.diag(first[1]))
+    dj[:n] = np.maximum(dj[:n], np.abs(k_diag))
+    damping = np.maximum(dj, 1e-12 * max(float(np.max(dj)), 1.0))
+    out = damped_newton(evaluate, x0, converged=converged, merit=lambda R: float(np.linalg.norm(R)), cap=np.inf,
+                        damping=damping, lam0=0.0, shrink=0.1, lam_min=0.0, grow=10.0, lam_restart=1e-6,
+                        lam_max=1e8, max_iter=max_iter, backtrack=29, refuse=(ValueError, ArithmeticError),
+                        evaluated=first, floor=lambda R, d: np.max(np.abs(R)) <= 1e-6 * _force_scale(f_scale, d[1]))
+    x, forces = out.data
+    if out.converged:
+        return x[:n], [x[o - s:o] for s, o in zip(sizes, offs[1:])], forces, out.iterations
     names = ", ".join(b.name for b in bearings) or "none"
+    why = "the iteration limit" if out.iterations >= max_iter else "the damping limit (every step refused)"
     raise EquilibriumError(
         f"static equilibrium at {speed / RPM:.6g} rpm did not converge: damped Newton with the nonlinear "
-        f"reactions of the bearings ({names}), {max_iter} iterations, residual {np.max(np.abs(R)):.3g} N "
-        f"(largest at DOF {int(np.argmax(np.abs(R)))})")
+        f"reactions of the bearings ({names}) stopped at {why} after {out.iterations} of {max_iter} iterations, "
+        f"residual {np.max(np.abs(out.R)):.3g} N (largest at DOF {int(np.argmax(np.abs(out.R)))})")
 
 
 def _force_scale(load_scale: float, forces) -> float:

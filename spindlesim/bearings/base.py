@@ -40,17 +40,20 @@ force_and_tangent(q, v, t, speed, angle=None) -> (f, K_t, C_t)
 force(q, v, t, speed, angle=None) -> f
     The force alone (the first output of ``force_and_tangent``); the default evaluates that, a
     family whose tangent costs more (differences) gives the force directly.
-linearized(speed, static_load) -> (K, C)
+linearized(speed, static_load, start=None) -> (K, C)
     Stiffness [N/m, N/rad, N m/rad] and damping coefficients on ``dof_names`` at the operating
     point: ``static_load`` is what the shaft puts on the bearing at static equilibrium
     (= -f there), on ``dof_names``.  Used by static, modal, Campbell, FRF, unbalance, chatter.
     For a bearing whose reaction does not vary in time this equals the tangent of
     ``force_and_tangent`` at the displacement that carries ``static_load``; a rolling bearing
-    returns that tangent averaged over one rolling-element pitch.
-static_displacement(speed, static_load) -> q
+    returns that tangent averaged over one rolling-element pitch.  ``start``: a displacement near
+    the one that carries ``static_load`` (node DOFs, then internal; the rotor's state there, or a
+    neighbouring speed's), where a family that iterates may start (the ball set does); a start
+    only, the answer is the same to the family's tolerance.
+static_displacement(speed, static_load, start=None) -> q
     The displacement (node DOFs followed by internal DOFs) at which the bearing alone carries
     ``static_load``: the start of the rotor's static equilibrium, exact for a statically
-    determinate rotor.  The default solves the linearised bearing.
+    determinate rotor.  The default solves the linearised bearing.  ``start``: as in ``linearized``.
 at_operating_point(speed, static_load, transient=False) -> bearing
     The same bearing with everything the operating point sets held fixed (a fluid film: the
     viscosity of its thermal equilibrium), for a nonlinear analysis about that point: the static
@@ -113,9 +116,11 @@ class Bearing(Protocol):
     def force_and_tangent(self, q: np.ndarray, v: np.ndarray, t: float, speed: float,
                           angle: float | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
 
-    def linearized(self, speed: float, static_load: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]: ...
+    def linearized(self, speed: float, static_load: np.ndarray | None = None,
+                   start: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]: ...
 
-    def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray: ...
+    def static_displacement(self, speed: float, static_load: np.ndarray | None = None,
+                            start: np.ndarray | None = None) -> np.ndarray: ...
 
     def force(self, q: np.ndarray, v: np.ndarray, t: float, speed: float, angle: float | None = None) -> np.ndarray: ...
 
@@ -177,7 +182,8 @@ class BearingBase:
 
     internal_mass: np.ndarray = np.zeros(0)
 
-    def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
+    def static_displacement(self, speed: float, static_load: np.ndarray | None = None,
+                            start: np.ndarray | None = None) -> np.ndarray:
         n = len(self.dof_names)
         q = np.zeros(n + self.internal_mass.size)
         if static_load is not None and np.any(static_load):
@@ -271,11 +277,14 @@ class AxiallyShifted(BearingBase):
     def force(self, q, v, t, speed, angle=None):
         return self.inner.force(np.asarray(q, float) + self._shift, v, t, speed, angle)
 
-    def linearized(self, speed, static_load=None):
-        return self.inner.linearized(speed, static_load)
+    def linearized(self, speed, static_load=None, start=None):
+        return self.inner.linearized(speed, static_load, start=self._shifted(start))
 
-    def static_displacement(self, speed, static_load=None):
-        return self.inner.static_displacement(speed, static_load) - self._shift
+    def static_displacement(self, speed, static_load=None, start=None):
+        return self.inner.static_displacement(speed, static_load, start=self._shifted(start)) - self._shift
+
+    def _shifted(self, start):
+        return None if start is None else np.asarray(start, float) + self._shift[:len(start)]
 
     def at_operating_point(self, speed, static_load=None, transient=False):
         inner = self.inner.at_operating_point(speed, static_load, transient)

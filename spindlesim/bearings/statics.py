@@ -1,4 +1,4 @@
-"""The one damped Newton of the bearing statics, and the equilibrium of one bearing alone under a load.
+"""The one damped Newton of the statics, and the equilibrium of one bearing alone under a load.
 
 :func:`damped_newton` solves R(x) = 0 by Newton's method with Levenberg-Marquardt damping and a step
 acceptance test: the step dx solves (J + lambda D) dx = R (J the tangent, D a diagonal scale: given,
@@ -7,16 +7,20 @@ norm of R); lambda shrinks after a step taken and grows after one refused, so fa
 steps turn towards the residual and near it they are Newton's.  Contact laws Q = K delta^n have zero
 stiffness at first touch and a roller in its clearance has none at all, so the plain Newton matrix
 can be singular; the damping vanishes at convergence.  The ball set (``ball/equilibrium.py``), the
-DTRB ring (``dtrb/bearing.py``) and :func:`equilibrium_under_load` use it; the rotor's own static
-equilibrium is ``spindlesim.analysis.operating``.
+DTRB ring (``dtrb/bearing.py``), :func:`equilibrium_under_load` and the rotor's static equilibrium
+(``spindlesim.analysis.operating``: undamped at first, a refused step halved before the damping grows,
+a bearing that refuses a position is a refused step) use it.
 """
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 from typing import Any, Callable
 
 import numpy as np
+
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -38,19 +42,23 @@ def damped_newton(evaluate: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray,
                   shrink: float = 0.2, lam_min: float = 1e-14, grow: float = 8.0, lam_max: float = 1e12,
                   max_iter: int = 200, stalled: Callable[[np.ndarray, float, float], bool] | None = None,
                   evaluated: tuple[np.ndarray, np.ndarray, Any] | None = None,
-                  floor: Callable[[np.ndarray, Any], bool] | None = None) -> NewtonResult:
+                  floor: Callable[[np.ndarray, Any], bool] | None = None, lam_restart: float = 1e-6,
+                  backtrack: int = 0, refuse: tuple[type[BaseException], ...] = ()) -> NewtonResult:
     """Levenberg-Marquardt damped Newton with step acceptance (module note).
 
     ``evaluate(x) -> (R, J, data)``: residual, tangent (the step solves (J + lam D) dx = R) and anything
     the caller keeps; ``converged(R, data)`` ends the solve (checked before each step); ``merit(R)``: a
     step is taken when finite and not above the current merit (to 1e-12 of it); ``cap``: the largest
     step per unknown (a step beyond it is scaled down whole); ``damping``: D (None: |diag J|, zeros
-    raised to 1e-6 of its largest); lambda starts at ``lam0``, is multiplied by ``shrink`` (not below
-    ``lam_min``) after a step taken and by ``grow`` after one refused (or a singular matrix), and the
-    solve gives up beyond ``lam_max`` or after ``max_iter`` iterations; ``stalled(R, merit_before,
-    merit_after)``: a step taken that ends the solve (at the round-off floor of the residual);
-    ``evaluated``: ``evaluate(x0)`` when the caller has it; ``floor(R, data)``: when a step is refused, the
-    current point is at the round-off floor of the residual (noise of an inner solve): the solve ends there.
+    raised to 1e-6 of its largest); lambda starts at ``lam0`` (0: undamped), is multiplied by ``shrink``
+    (not below ``lam_min``) after a step taken and by ``grow`` after one refused (or a singular matrix;
+    from 0 to ``lam_restart``), and the solve gives up beyond ``lam_max`` or after ``max_iter`` iterations;
+    ``backtrack``: a refused step is halved up to that many times before lambda grows (a line search);
+    ``refuse``: exceptions of ``evaluate`` at a trial point that refuse the step (a bearing that cannot
+    take that position); ``stalled(R, merit_before, merit_after)``: a step taken that ends the solve (at
+    the round-off floor of the residual); ``evaluated``: ``evaluate(x0)`` when the caller has it;
+    ``floor(R, data)``: when a step is refused, the current point is at the round-off floor of the
+    residual (noise of an inner solve): the solve ends there.
     Returns the last point taken; the caller raises its own error when ``converged`` is False.
     """
     x = np.array(x0, float)
@@ -71,19 +79,30 @@ def damped_newton(evaluate: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray,
             big = float(np.max(np.abs(step) / cap))
             if big > 1.0:
                 step = step / big
-            trial = x + step
-            Rt, Jt, dt = evaluate(trial)
-            mt = merit(Rt)
-            if np.all(np.isfinite(Rt)) and mt <= m * (1.0 + 1e-12):
+            for _ in range(backtrack + 1):
+                trial = x + step
+                try:
+                    Rt, Jt, dt = evaluate(trial)
+                except refuse as exc:
+                    log.debug("damped Newton: step refused (%s)", exc)
+                    step = 0.5 * step
+                    continue
+                mt = merit(Rt)
+                if np.all(np.isfinite(Rt)) and mt <= m * (1.0 + 1e-12):
+                    break
+                step = 0.5 * step
+            else:
+                trial = None
+            if trial is not None:
                 before = m
                 x, R, J, data, m = trial, Rt, Jt, dt, mt
-                lam = max(lam * shrink, lam_min)
+                lam = max(lam * shrink, lam_min) if lam > 0.0 else 0.0
                 if stalled is not None and stalled(R, before, m):
                     return NewtonResult(x, R, J, data, it, True)
                 continue
         if floor is not None and floor(R, data):
             return NewtonResult(x, R, J, data, it, True)
-        lam *= grow
+        lam = lam * grow if lam > 0.0 else lam_restart
         if lam > lam_max:
             break
     return NewtonResult(x, R, J, data, it, False)

@@ -27,6 +27,8 @@ def ball_calls(b, w):
     b.force_and_tangent(Q, np.zeros(5), 0.0, w, 0.3)
     b.linearized(w, LOAD)
     b.static_displacement(w, LOAD)
+    b.linearized(w, LOAD, start=st.displacement)
+    b.static_displacement(w, 1.1 * LOAD, start=st.displacement)
 
 
 @pytest.mark.parametrize("kw", [dict(), dict(model="full", preload={"kind": "spring", "axial_N": 800.0})],
@@ -65,6 +67,37 @@ def test_a_ball_warm_start_is_passed_in_and_finds_the_same_state():
     assert np.isfinite(work.centres).all()  # the starts live in the work, not on the bearing
     assert np.allclose(warm.displacement, cold.displacement, rtol=1e-9, atol=1e-15)
     assert np.allclose(warm.stiffness, cold.stiffness, rtol=1e-7, atol=1e-9 * np.abs(cold.stiffness).max())
+
+
+@pytest.mark.parametrize("kw", [dict(), dict(preload={"kind": "spring", "axial_N": 300.0, "floating": "-z"})],
+                         ids=["position preload", "spring preload"])
+def test_the_contracts_start_is_an_argument_that_saves_set_iterations_not_a_result(kw, monkeypatch):
+    """``static_displacement`` from a neighbouring operating point's displacement (a Campbell diagram's previous
+    speed: ``start``) and ``linearized`` from the displacement that carries the load find the same displacement
+    and coefficients as from the unloaded ring, in fewer set iterations (the first cage position none); a start
+    from which the set Newton fails is dropped."""
+    from spindlesim.bearings.ball import equilibrium
+
+    b = ball(**kw)
+    w, near = 12000.0 * RPM, b.solve(1.05 * LOAD, 11500.0 * RPM).displacement
+    iterations = []
+    real = equilibrium.solve
+
+    def counted(*args, **kwargs):
+        out = real(*args, **kwargs)
+        iterations.append(out[2])
+        return out
+
+    monkeypatch.setattr(equilibrium, "solve", counted)
+    cold = b.static_displacement(w, LOAD), b.linearized(w, LOAD)[0]
+    n_cold, iterations[:] = sum(iterations), []
+    d = b.static_displacement(w, LOAD, start=near)  # as the rotor's operating points: from the neighbour,
+    warm = d, b.linearized(w, LOAD, start=d)[0]  # the coefficients from the displacement that carries the load
+    assert iterations[1] == 0 and sum(iterations) < n_cold - 3
+    assert np.allclose(warm[0], cold[0], rtol=1e-9, atol=1e-15)
+    assert np.allclose(warm[1], cold[1], rtol=1e-7, atol=1e-9 * np.abs(cold[1]).max())
+    far = np.array([1.0, -1.0, 1.0, 0.1, 0.1])  # the rings far past each other: no ball fits
+    assert np.allclose(b.static_displacement(w, LOAD, start=far), cold[0], rtol=1e-9, atol=1e-15)
 
 
 def test_a_dtrb_is_unchanged_by_its_solves_and_its_operating_point_is_a_new_bearing():

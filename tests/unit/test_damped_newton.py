@@ -79,3 +79,28 @@ def test_a_residual_at_its_noise_floor_ends_the_solve():
     assert not damped_newton(noisy(), np.array([0.0]), **kw).converged
     out = damped_newton(noisy(), np.array([0.0]), floor=lambda r, _: abs(r[0]) <= 1e-8, **kw)
     assert out.converged and out.x[0] == pytest.approx(1.0, abs=1e-8)
+
+
+def test_an_undamped_start_takes_newtons_step_and_halves_a_refused_one_before_damping():
+    """The rotor statics' options: lam0 = 0 takes Newton's own step; a step that raises the merit is halved
+    (``backtrack``) before the damping grows; an exception of ``refuse`` at a trial point refuses the step."""
+    evaluate, seen = atan_problem()
+    out = damped_newton(evaluate, np.array([2.0]), converged=lambda r, _: abs(r[0]) <= 1e-12,
+                        merit=lambda r: float(np.linalg.norm(r)), cap=np.inf, damping=np.ones(1), lam0=0.0,
+                        lam_min=0.0, backtrack=10, max_iter=50)
+    assert out.converged and abs(out.x[0]) < 1e-12
+    newton = 2.0 - np.arctan(2.0) * 5.0
+    assert seen[1][0] == pytest.approx(newton, rel=1e-15)  # undamped
+    assert seen[2][0] == pytest.approx(2.0 + 0.5 * (newton - 2.0), rel=1e-15)  # the same step halved
+
+    def refusing(x):  # no position beyond 1.5 from the root
+        if abs(x[0]) > 1.5:
+            raise ArithmeticError("out of reach")
+        return -np.arctan(x), np.array([[1.0 / (1.0 + x[0] ** 2)]]), None
+
+    kw = dict(converged=lambda r, _: abs(r[0]) <= 1e-12, merit=lambda r: float(abs(r[0])), cap=np.inf,
+              damping=np.ones(1), lam0=0.0, lam_min=0.0, max_iter=50)
+    out = damped_newton(refusing, np.array([1.45]), backtrack=10, refuse=(ArithmeticError,), **kw)
+    assert out.converged and abs(out.x[0]) < 1e-12
+    with pytest.raises(ArithmeticError):  # not refused: the caller's error
+        damped_newton(refusing, np.array([1.45]), backtrack=10, **kw)

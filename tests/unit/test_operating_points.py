@@ -78,3 +78,52 @@ def test_a_state_is_kept_and_a_sweep_starts_each_speed_from_its_neighbour():
     sweep = pts.along(np.array([0.0, 1500.0, 3000.0]))
     assert pts.solves == 3 and sweep.states[2] is a  # 3000 rpm was known
     assert not sweep.stopped and sweep.first == 0
+
+
+def test_the_rotor_statics_is_the_damped_newton_of_the_statics_and_names_what_failed(monkeypatch):
+    """The rotor's equilibrium goes through ``bearings.statics.damped_newton``; when it fails the message
+    says at which speed, with which bearings and after how many iterations."""
+    rotor = build_rotor(default_deck("milling_spindle").deck)
+    calls = []
+    real = operating.damped_newton
+
+    def counted(*args, **kwargs):
+        calls.append(kwargs.get("lam0"))
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(operating, "damped_newton", counted)
+    st = operating.operating_state(rotor, 12000.0)
+    assert calls and st.newton_iterations > 0
+    with pytest.raises(operating.EquilibriumError, match=r"at 12000 rpm .*damped Newton.*\(front, rear.*1 of 1 "
+                                                         r"iterations, residual"):
+        operating.operating_state(rotor, 12000.0, max_iter=1)
+
+
+def test_a_sweep_starts_each_ball_set_from_the_previous_state_passed_in(monkeypatch):
+    """The bearings stay as built: the previous speed's displacement of each ball set is passed to
+    ``static_displacement`` (``start``), and ``linearized`` starts from the state's own displacement; the
+    coefficients are those of a state solved cold."""
+    from spindlesim.bearings.ball.bearing import BallBearing
+
+    rotor = build_rotor(default_deck("milling_spindle").deck)
+    seen = []
+    for verb in ("static_displacement", "linearized"):
+        real = getattr(BallBearing, verb)
+
+        def spy(self, speed, static_load=None, start=None, _real=real, _verb=verb):
+            seen.append((_verb, self.name, None if start is None else np.array(start)))
+            return _real(self, speed, static_load, start=start)
+
+        monkeypatch.setattr(BallBearing, verb, spy)
+    pts = OperatingPoints(rotor)
+    first, second = pts.along(np.array([6000.0, 7000.0])).states
+    seen = seen[-4:]  # the second speed: a static displacement and the coefficients of each set
+    for k, b in enumerate(rotor.bearings[:2]):
+        d_first, d_second = (st.q[st.bearing_index[k]] for st in (first, second))
+        assert [s[0] for s in seen if s[1] == b.name] == ["static_displacement", "linearized"]
+        start_d, start_k = (s[2] for s in seen if s[1] == b.name)
+        np.testing.assert_array_equal(start_d, d_first)
+        np.testing.assert_allclose(start_k, d_second, rtol=1e-6, atol=1e-12)
+    cold = operating.operating_state(rotor, 7000.0)
+    for (k1, _), (k2, _) in zip(second.coefficients, cold.coefficients):
+        np.testing.assert_allclose(k1, k2, rtol=1e-6, atol=1e-6 * np.abs(k2).max())

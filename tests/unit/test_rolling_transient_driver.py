@@ -73,7 +73,7 @@ class Sabotage(BearingBase):
         K = np.eye(2) * M * W ** 2
         return -K @ q, K, np.zeros((2, 2))
 
-    def linearized(self, speed, static_load=None):
+    def linearized(self, speed, static_load=None, start=None):
         return np.eye(2) * M * W ** 2, np.zeros((2, 2))
 
 

@@ -49,7 +49,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..base import FIVE, BearingBase, shaft_angle
-from . import checks
+from . import checks, floating
 from . import equilibrium as eq
 from . import kernel as kn
 from .equilibrium import FREE, BallEquilibriumError, Held, Work
@@ -300,7 +300,7 @@ class BallBearing(BearingBase):
             ev = self._rows(q, om, phi, np.zeros(rows), all_rows, work)
             return _SetEval(ev.f_rows.sum(axis=0), ev.K_rows.sum(axis=0), ev, 0.0)
         fl = np.flatnonzero(self._floating)
-        shift, evf = self._float_solve(q, om, phi, fl, work)
+        shift, evf = floating.shift(self, q, om, phi, fl, work)
         w = np.zeros(rows)
         w[fl] = shift
         fixed = np.flatnonzero(~self._floating)
@@ -312,46 +312,6 @@ class BallBearing(BearingBase):
         K = Kc + (ev.K_rows.sum(axis=0) - Kg)
         return _SetEval(ev.f_rows.sum(axis=0), K, ev, shift)
 
-    def _float_solve(self, q, om, phi, fl, work: Work) -> tuple[float, _RowEval]:
-        """Axial shift w (along z) of the floating outer rings with their thrust = axial_N."""
-        g = self.geometry
-        Fs, sg = self.preload.axial_N, self._s_float
-        rows = g.rows
-
-        def thrust(v):  # v: approach in the floating rows' direction, w = -sg v
-            w = np.zeros(rows)
-            w[fl] = -sg * v
-            ev = self._rows(q, om, phi, w, fl, work)
-            return -sg * ev.f_rows[:, 2].sum(), ev.K_rows[:, 2, 2].sum(), ev
-
-        if work.shift is None:
-            per_ball = Fs / (fl.size * g.balls * max(math.sin(g.mounted_angle_rad), 0.05))
-            v = (per_ball / g.K_series) ** (2.0 / 3.0) / max(math.sin(g.mounted_angle_rad), 0.05) - sg * q[2]
-        else:
-            v = work.shift - sg * q[2]
-        lo = hi = None
-        for _ in range(200):
-            h, k, ev = thrust(v)
-            r = h - Fs
-            if abs(r) <= 1e-12 * Fs:
-                work.shift = v + sg * q[2]
-                return -sg * v, ev
-            if r < 0.0:
-                lo = v
-            else:
-                hi = v
-            vn = v - r / k if k > 0.0 else v + max(1e-6, abs(v))
-            if lo is not None and hi is not None and not lo < vn < hi:
-                vn = 0.5 * (lo + hi)
-            if lo is not None and hi is not None and hi - lo <= 1e-16 * max(abs(v), 1e-3):
-                work.shift = v + sg * q[2]
-                return -sg * v, ev
-            v = vn
-        raise BallEquilibriumError(
-            f"bearing {self.name!r}: floating outer ring(s) found no axial position carrying the spring "
-            f"force {Fs:g} N (Newton with bisection, 200 iterations; residual {r:.3g} N) at "
-            f"{om * 30 / math.pi:.6g} rpm, q = {np.round(np.asarray(q) * 1e6, 4).tolist()} (um, urad)")
-
     # ---- the contract ---------------------------------------------------------------------------
     def force_and_tangent(self, q, v, t, speed, angle=None):
         """(f, K_t, C_t) on (x, y, z, theta_x, theta_y); C_t = 0."""
@@ -359,29 +319,36 @@ class BallBearing(BearingBase):
         ev = self._evaluate(qq, float(speed), self.cage_angle(shaft_angle(speed, t, angle)))
         return ev.f.copy(), ev.K.copy(), np.zeros((5, 5))
 
-    def linearized(self, speed, static_load=None):
+    def linearized(self, speed, static_load=None, start=None):
         """(K, C) at the equilibrium under ``static_load`` (5 entries; None = 0), K averaged over
-        ``pitch_samples`` cage positions within one ball pitch; C = 0."""
-        load = np.zeros(5)
-        if static_load is not None:
-            sl = np.asarray(static_load, float)
-            load[: sl.size] = sl
+        ``pitch_samples`` cage positions within one ball pitch, the first from ``start`` (the contract's;
+        default the unloaded ring), each next from the one before; C = 0."""
+        load = _five(static_load)
         pitch = 2.0 * math.pi / self.geometry.balls
-        K = np.zeros((5, 5))
-        q, work = None, Work(self)  # each cage position starts from the one before
+        K, work = np.zeros((5, 5)), Work(self)
+        q, ev = self._started(load, float(speed), start, work)
         for m in range(self.pitch_samples):
-            phi = m * pitch / self.pitch_samples
-            q, ev, _ = self._equilibrium(load, float(speed), phi, q, work=work)
+            if m:
+                q, ev, _ = self._equilibrium(load, float(speed), m * pitch / self.pitch_samples, q, work=work)
             K += ev.K
         return K / self.pitch_samples, np.zeros((5, 5))
 
-    def static_displacement(self, speed, static_load=None) -> np.ndarray:
-        """Inner-ring displacement carrying ``static_load`` at cage angle 0 (the contract)."""
-        load = np.zeros(5)
-        if static_load is not None:
-            sl = np.asarray(static_load, float)
-            load[: sl.size] = sl
-        return self._equilibrium(load, float(speed), 0.0)[0].copy()
+    def static_displacement(self, speed, static_load=None, start=None) -> np.ndarray:
+        """Inner-ring displacement carrying ``static_load`` at cage angle 0, from ``start`` (the contract)."""
+        return self._started(_five(static_load), float(speed), start, Work(self))[0].copy()
+
+    def _started(self, load, speed: float, start, work: Work):
+        """(q, evaluation) of the equilibrium at cage angle 0 from ``start`` (None: the unloaded ring), or from
+        the unloaded ring when Newton fails from there: the same root to the set tolerance."""
+        if start is not None:
+            q0 = np.array(start, float)[:5]
+            if self.fully_floating:
+                q0[2] = 0.0  # not solved for (the spring carries z): as from the unloaded ring
+            try:
+                return self._equilibrium(load, speed, 0.0, q0, work=work)[:2]
+            except BallEquilibriumError:
+                work.forget()
+        return self._equilibrium(load, speed, 0.0, work=work)[:2]
 
     # ---- equilibrium and results ---------------------------------------------------------------
     def _equilibrium(self, load, speed: float, phi: float, q0=None, max_iter: int = 100, held: Held = FREE,
@@ -471,6 +438,15 @@ class BallBearing(BearingBase):
             for lam, Q in ((lam_o, r.Qo), (lam_i, r.Qi)):
                 out = np.maximum(out, np.where((r.Mg != 0.0) & (lam > 0.0), np.abs(lam * r.Mg / D) / Q, 0.0))
         return out
+
+
+def _five(static_load) -> np.ndarray:
+    """The contract's ``static_load`` on (x, y, z, theta_x, theta_y), zeros where not given."""
+    load = np.zeros(5)
+    if static_load is not None:
+        sl = np.asarray(static_load, float)
+        load[: sl.size] = sl
+    return load
 
 
 def _race_label(race: np.ndarray) -> str:

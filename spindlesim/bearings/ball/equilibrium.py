@@ -69,13 +69,14 @@ FREE = Held()
 
 class Work:
     """What one call carries from one evaluation of the set to the next, never kept on the bearing: each
-    ball's centre (its Newton start; NaN: the built-in start), the floating outer rings' axial shift (None:
-    from the spring force) and the kernel parameters at the speed.  Each solve or evaluation makes its own."""
+    ball's centre (its Newton start; NaN: the built-in start), the floating outer rings' last axial position
+    (``floating.shift``'s start: (u, q, du/dq); None: where one ball carries its share) and the kernel parameters at the
+    speed.  Each solve or evaluation makes its own."""
 
     def __init__(self, bearing: "BallBearing"):
         g = bearing.geometry
         self.centres = np.full((g.rows, g.balls, 2), np.nan)
-        self.shift: float | None = None
+        self.shift: tuple[float, np.ndarray, np.ndarray] | None = None
         self._params: tuple["BallBearing", float, np.ndarray] | None = None
 
     def params(self, b: "BallBearing", om: float) -> np.ndarray:
@@ -91,8 +92,9 @@ class Work:
         return self._params[2]
 
     def forget(self) -> None:
-        """Back to the built-in starts (after a failed evaluation)."""
+        """Back to the built-in starts (after a failed evaluation or solve)."""
         self.centres[:] = np.nan
+        self.shift = None
 
 
 def reference_stiffness(geometry) -> np.ndarray:

@@ -199,8 +199,8 @@ class DtrbBearing(BearingBase):
             load[: q.size] = q
         return load
 
-    def linearized(self, speed: float, static_load: np.ndarray | None = None):
-        """Contract: K at the load equilibrium on ``dof_names``, C = 0.
+    def linearized(self, speed: float, static_load: np.ndarray | None = None, start=None):
+        """Contract: K at the load equilibrium on ``dof_names`` (solved from d = 0, not ``start``), C = 0.
 
         With ``dof_names`` (x, y) K is the (X, Y) block of the 5x5 stiffness: the axial load is
         the deck's, and axial motion and tilt stay at their equilibrium values (held, see
@@ -210,8 +210,9 @@ class DtrbBearing(BearingBase):
         n = len(self.dof_names)
         return K[:n, :n].copy(), np.zeros((n, n))
 
-    def static_displacement(self, speed: float, static_load=None) -> np.ndarray:
-        """Ring displacement at the equilibrium under the static (and the deck's axial) load."""
+    def static_displacement(self, speed: float, static_load=None, start=None) -> np.ndarray:
+        """Ring displacement at the equilibrium under the static (and the deck's axial) load (from d = 0, not
+        ``start``)."""
         return self.solve(self.full_load(static_load), speed).displacement[: len(self.dof_names)].copy()
 
     def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "DtrbBearing":

@@ -142,12 +142,13 @@ class FluidFilmBearing(BearingBase):
         mu = free.analyze(speed).film.viscosity_Pa_s if viscosity_Pa_s is None else viscosity_Pa_s
         return _offset(free, float(speed), float(mu), near).copy()
 
-    def linearized(self, speed: float, static_load: np.ndarray | None = None):
-        """(K [2x2] N/m, C [2x2] N s/m) in the x, y frame at the thermal equilibrium."""
+    def linearized(self, speed: float, static_load: np.ndarray | None = None, start=None):
+        """(K [2x2] N/m, C [2x2] N s/m) in the x, y frame at the thermal equilibrium (``start`` unused: the film
+        keeps its own starts)."""
         res = self.analyze(speed, static_load)
         return res.film.K_N_m.copy(), res.film.C_Ns_m.copy()
 
-    def static_displacement(self, speed: float, static_load: np.ndarray | None = None) -> np.ndarray:
+    def static_displacement(self, speed: float, static_load: np.ndarray | None = None, start=None) -> np.ndarray:
         """The journal position of the thermal equilibrium at (speed, load), from ``journal_offset``."""
         film = self.analyze(speed, static_load).film
         return film.position_m - self.journal_offset(speed, film.viscosity_Pa_s, near=film)

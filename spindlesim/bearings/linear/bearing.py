@@ -31,7 +31,7 @@ class LinearBearing(BearingBase):
         C = np.array([[np.interp(speed, s, self.C_Ns_m[:, i, j]) for j in range(2)] for i in range(2)])
         return K, C
 
-    def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
+    def linearized(self, speed: float, static_load=None, start=None) -> tuple[np.ndarray, np.ndarray]:
         K, C = self.coefficients(speed)
         return K.copy(), C.copy()
 

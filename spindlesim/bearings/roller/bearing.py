@@ -67,8 +67,9 @@ class RigidRaceBearing(RigidRace, BearingBase):
         out = [self._at_angle(q, a) for a in self._pitch_angles()]
         return np.mean([o[0] for o in out], axis=0), np.mean([o[1] for o in out], axis=0)
 
-    def static_displacement(self, speed: float = 0.0, static_load=None) -> np.ndarray:
-        """Displacement at which the pitch-averaged reaction carries ``static_load`` (x, y)."""
+    def static_displacement(self, speed: float = 0.0, static_load=None, start=None) -> np.ndarray:
+        """Displacement at which the pitch-averaged reaction carries ``static_load`` (x, y); from the
+        roller load distribution's estimate, not ``start``."""
         W = np.asarray(static_load if static_load is not None else np.zeros(2), float)[:2]
         fr = float(np.hypot(*W))
         if fr == 0.0:
@@ -79,7 +80,7 @@ class RigidRaceBearing(RigidRace, BearingBase):
         scale = max(dist.displacement_m, 1e-9)
         return equilibrium_under_load(self.pitch_average, W, q0, scale, self.name, max_step=scale)
 
-    def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
+    def linearized(self, speed: float, static_load=None, start=None) -> tuple[np.ndarray, np.ndarray]:
         """The tangent at the static state averaged over one roller pitch; no damping."""
         _, K = self.pitch_average(self.static_displacement(speed, static_load))
         return K, np.zeros((2, 2))
@@ -193,8 +194,9 @@ class FlexibleRaceBearing(FlexibleRace, BearingBase):
         f, K = self._condensed(np.concatenate([qn, z]), speed, angle)
         return f, K, z
 
-    def static_displacement(self, speed: float, static_load=None, angle: float = 0.0) -> np.ndarray:
-        """Contract coordinates where the bearing alone carries ``static_load`` at a shaft angle."""
+    def static_displacement(self, speed: float, static_load=None, angle: float = 0.0, start=None) -> np.ndarray:
+        """Contract coordinates where the bearing alone carries ``static_load`` at a shaft angle (from the
+        unloaded race, not ``start``)."""
         W = np.zeros(2) if static_load is None else np.asarray(static_load, float)[:2]
         scale = np.concatenate([[1e-7] * 2, self._internal_scale()])
 
@@ -204,7 +206,7 @@ class FlexibleRaceBearing(FlexibleRace, BearingBase):
 
         return equilibrium_under_load(ft, W, np.zeros(self.n_pos), scale, self.name, tol=1e-8)
 
-    def linearized(self, speed: float, static_load=None) -> tuple[np.ndarray, np.ndarray]:
+    def linearized(self, speed: float, static_load=None, start=None) -> tuple[np.ndarray, np.ndarray]:
         """The tangent of the pitch-averaged reaction at the static state; C = 0 (the contract).
 
         The node reaction with the rollers and race in equilibrium (condensed: their modes, ~100
