@@ -114,12 +114,9 @@ class SpindleThermal:
 
     # ---- temperatures -> bearings ------------------------------------------------------------------
     def parts(self, T: dict[str, float], name: str) -> BearingTemperatures:
-        lay = self.model.layout
-        z = next(b.position_m for b in lay.bearings if b.name == name)
         inner, elements, outer = self._parts[name]
-        return BearingTemperatures(T[inner], T[outer], T[elements],
-                                   self.model.reference_C, T[f"shaft[{segment(self._s_edges, z)}]"],
-                                   T[f"housing[{segment(self._h_edges, z)}]"])
+        shaft, housing = self.network.seat_C(name, T)
+        return BearingTemperatures(T[inner], T[outer], T[elements], self.model.reference_C, shaft, housing)
 
     def offsets(self, T: dict[str, float]) -> dict[str, float]:
         """Axial offset of each bearing's housing seat against its shaft seat (module note) [m]."""
@@ -331,11 +328,6 @@ def speed_limit(thermal: SpindleThermal, stable: ThermalState, runaway_rpm: floa
 
 def lay_edges(lengths, start: float) -> np.ndarray:
     return start + np.concatenate([[0.0], np.cumsum(lengths)])
-
-
-def segment(edges: np.ndarray, z: float) -> int:
-    """The segment of ``edges`` holding ``z`` (the nearest end one outside)."""
-    return int(min(max(np.searchsorted(edges, z, side="right") - 1, 0), len(edges) - 2))
 
 
 def _growth(edges: np.ndarray, temps, alpha: float, ref_C: float, z_from: float, z_to: float) -> float:

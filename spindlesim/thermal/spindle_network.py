@@ -7,9 +7,10 @@ Nodes (names are stable; the coupling code refers to them):
 - ``housing[j]``: housing segment j, axial conduction likewise, radial conduction through half its
   wall to the inner and the outer surface; outer surface to ``ambient`` by free convection of a
   horizontal cylinder (Churchill-Chu, at the current temperatures) and radiation;
-- ``bearing:<name>:inner|balls|outer`` (``rollers`` for a roller bearing): inner ring -- shaft segment under
-  the bearing (seat contact in series with half the ring's radial conduction), inner ring -- balls and balls --
-  outer ring through the Hertz contacts and the EHL film, balls -- housing through the oil-air of the bearing
+- ``bearing:<name>:inner|balls|outer`` (``rollers`` for a roller bearing): inner ring -- the shaft segments its
+  width overlaps, by share (seat contact in series with half the ring's radial conduction; a bearing on a node
+  straddles the elements on both sides), inner ring -- balls and balls -- outer ring through the Hertz contacts
+  and the EHL film, balls -- housing (the segments around the seat, by share) through the oil-air of the bearing
   cavity (Whitaker), outer ring -- housing segment (seat contact, half ring, half housing wall);
 - ``jacket:coolant[k]``: coolant segments in flow order, fed by the boundary ``jacket:inlet``
   (advection m_dot c_p), each exchanging with the housing segment at its axial position (h from
@@ -80,6 +81,17 @@ def _segment_at(edges: np.ndarray, z: float, what: str) -> int:
     return int(min(max(np.searchsorted(edges, z, side="right") - 1, 0), edges.size - 2))
 
 
+def _seat(edges: np.ndarray, b, what: str) -> list[tuple[int, float]]:
+    """[(segment, share)] of a bearing's width over the segments of ``edges`` (shares sum to 1); a bearing whose
+    width lies outside every segment (a point) takes the segment at its centre."""
+    over = _overlaps(edges, b.position_m - 0.5 * b.width_m, b.position_m + 0.5 * b.width_m)
+    total = sum(w for _, w in over)
+    if total <= 0.0:
+        return [(_segment_at(edges, b.position_m, f"bearing {b.name!r}{what}"), 1.0)]
+    _segment_at(edges, b.position_m, f"bearing {b.name!r}{what}")  # its centre must lie on the segments
+    return [(k, w / total) for k, w in over]
+
+
 def _overlaps(edges: np.ndarray, a: float, b: float) -> list[tuple[int, float]]:
     out = []
     for i in range(edges.size - 1):
@@ -97,6 +109,15 @@ class SpindleNetwork:
     network: Network
     _rules: tuple = field(repr=False, compare=False)
     _hertz: dict = field(repr=False, compare=False)
+    #: each bearing's seats: ([(shaft segment, share of the width)], [(housing segment, share)])
+    seats: dict = field(default_factory=dict, repr=False, compare=False)
+
+    def seat_C(self, name: str, temperatures_C: Mapping[str, float]) -> tuple[float, float]:
+        """(shaft, housing) seat temperatures of bearing ``name``: the means over the segments its width
+        overlaps, by share."""
+        s, h = self.seats[name]
+        return (sum(f * temperatures_C[f"shaft[{i}]"] for i, f in s),
+                sum(f * temperatures_C[f"housing[{j}]"] for j, f in h))
 
     # ------------------------------------------------------------------ values per evaluation
     def conductances(self, speed_rad_s: float, temperatures_C: np.ndarray | None = None,
@@ -118,7 +139,8 @@ class SpindleNetwork:
             el = _suffix(b)
             out[f"bearing:{b.name}:inner--{el}"] = g.inner_balls_W_K + faces_i
             out[f"bearing:{b.name}:{el}--outer"] = g.balls_outer_W_K + faces_o
-            out[f"bearing:{b.name}:{el}--housing"] = g.balls_cavity_W_K
+            for j, f in self.seats[b.name][1]:
+                out[f"bearing:{b.name}:{el}--housing[{j}]"] = f * g.balls_cavity_W_K
         return out
 
     def _bearing(self, b, speed, c: BearingContacts | None, T):
@@ -335,33 +357,35 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
         rules.append((name, "fn", {"fn": f_out}))
 
     covered = np.zeros(len(lay.shaft))   # shaft length under bearings / rotor per segment
-    hertz = {}
+    hertz, shares = {}, {}
     for b in lay.bearings:
         pre = f"bearing:{b.name}"
         el = _suffix(b)
         nodes += [Node(f"{pre}:inner", b.inner_mass_kg() * b.ring.specific_heat_J_kgK),
                   Node(b.elements_node, b.balls_mass_kg() * b.ball.specific_heat_J_kgK),
                   Node(f"{pre}:outer", b.outer_mass_kg() * b.ring.specific_heat_J_kgK)]
-        i = _segment_at(s_edges, b.position_m, f"bearing {b.name!r}")
-        j = _segment_at(h_edges, b.position_m, f"bearing {b.name!r} (housing)")
+        seat_s = _seat(s_edges, b, "")
+        seat_h = _seat(h_edges, b, " (housing)")
+        shares[b.name] = (seat_s, seat_h)
         for k, w in _overlaps(s_edges, b.position_m - 0.5 * b.width_m, b.position_m + 0.5 * b.width_m):
             covered[k] += w
         kr = b.ring.conductivity_W_mK
-        g_in = conductance_in_series(
-            b.inner_seat_W_m2K * math.pi * b.bore_m * b.width_m,
-            cylindrical_shell_conductance(0.5 * b.bore_m, 0.25 * (b.bore_m + b.inner_shoulder_m), b.width_m, kr))
-        add(f"shaft[{i}]", f"{pre}:inner", g_in)
-        hs = lay.housing[j]
-        g_out = conductance_in_series(
-            cylindrical_shell_conductance(0.25 * (b.outer_diameter_m + b.outer_shoulder_m), 0.5 * b.outer_diameter_m,
-                                          b.width_m, kr),
-            b.outer_seat_W_m2K * math.pi * b.outer_diameter_m * b.width_m,
-            cylindrical_shell_conductance(0.5 * hs.inner_diameter_m, h_half[j], b.width_m, kh)
-            if h_half[j] > 0.5 * hs.inner_diameter_m else math.inf)
-        add(f"{pre}:outer", f"housing[{j}]", g_out)
+        for i, f in seat_s:  # the seat straddles the segments it overlaps (a bearing on a node: both sides)
+            w = f * b.width_m
+            add(f"shaft[{i}]", f"{pre}:inner", conductance_in_series(
+                b.inner_seat_W_m2K * math.pi * b.bore_m * w,
+                cylindrical_shell_conductance(0.5 * b.bore_m, 0.25 * (b.bore_m + b.inner_shoulder_m), w, kr)))
+        for j, f in seat_h:
+            w, hs = f * b.width_m, lay.housing[j]
+            add(f"{pre}:outer", f"housing[{j}]", conductance_in_series(
+                cylindrical_shell_conductance(0.25 * (b.outer_diameter_m + b.outer_shoulder_m),
+                                              0.5 * b.outer_diameter_m, w, kr),
+                b.outer_seat_W_m2K * math.pi * b.outer_diameter_m * w,
+                cylindrical_shell_conductance(0.5 * hs.inner_diameter_m, h_half[j], w, kh)
+                if h_half[j] > 0.5 * hs.inner_diameter_m else math.inf))
+            add(b.elements_node, f"housing[{j}]", 0.0, f"{pre}:{el}--housing[{j}]")
         add(f"{pre}:inner", b.elements_node, 0.0, f"{pre}:inner--{el}")
         add(b.elements_node, f"{pre}:outer", 0.0, f"{pre}:{el}--outer")
-        add(b.elements_node, f"housing[{j}]", 0.0, f"{pre}:{el}--housing")
         rules.append((f"{pre}", "bearing", {}))
         e_prime = 2.0 / ((1.0 - b.ring_poisson ** 2) / b.ring_E_Pa + (1.0 - b.ball_poisson ** 2) / b.ball_E_Pa)
         args = (b.ball_diameter_m, b.pitch_diameter_m, b.contact_angle_rad)
@@ -377,10 +401,10 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
         _jacket(lay, nodes, add, advs, rules, h_edges)
     _shaft_surfaces(lay, add, rules, s_edges, h_edges, covered, air_ref)
     net = Network(tuple(nodes), tuple(conds), tuple(advs))
-    sn = SpindleNetwork(lay, net, tuple(rules), hertz)
+    sn = SpindleNetwork(lay, net, tuple(rules), hertz, shares)
     nominal = sn.conductances(0.0)   # the network alone holds the values at rest, nominal temperatures
     conds = [Conductance(c.a, c.b, nominal.get(c.name, c.value_W_K), c.name) for c in conds]
-    return SpindleNetwork(lay, Network(tuple(nodes), tuple(conds), tuple(advs)), tuple(rules), hertz)
+    return SpindleNetwork(lay, Network(tuple(nodes), tuple(conds), tuple(advs)), tuple(rules), hertz, shares)
 
 
 def _motor(lay, nodes, add, rules, s_edges, h_edges, h_half, covered, air_ref):

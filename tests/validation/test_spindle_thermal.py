@@ -94,8 +94,9 @@ def _tight(spindle):
 
 def test_position_preload_rises_faster_with_temperature_than_with_speed_alone(spindle):
     """Front pair (position preload 15 um): from 4000 to 12,000 rpm its largest row thrust rises with
-    centrifugal force alone (bearings cold) and more than twice as much when the rings take their
-    temperatures."""
+    centrifugal force alone (bearings cold: 327 -> 592 N) and about twice as much when the rings take their
+    temperatures (576 -> 1106 N; 3.4 x before each ring's seat straddled both shaft and housing segments at its
+    node: the inner ring had been tied to the segment on the motor's side, which runs warmer)."""
     cold = {}
     for rpm in (4000.0, 12000.0):
         st = operating_state(spindle.rotor, rpm, spindle.shaft)
@@ -104,7 +105,7 @@ def test_position_preload_rises_faster_with_temperature_than_with_speed_alone(sp
     warm = {rpm: _front_thrust(spindle.steady(rpm)) for rpm in (4000.0, 12000.0)}
     rise_cold, rise_warm = cold[12000.0] - cold[4000.0], warm[12000.0] - warm[4000.0]
     assert rise_cold > 0
-    assert rise_warm > 2.0 * rise_cold
+    assert rise_warm > 1.5 * rise_cold
 
 
 def test_spring_preload_holds_its_thrust(spindle):

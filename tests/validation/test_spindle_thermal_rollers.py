@@ -295,3 +295,51 @@ def test_a_warm_up_instant_needs_its_warm_up():
     d["spindle_thermal"]["warm_up_at_min"] = 500.0
     with pytest.raises(DeckError, match="beyond the warm-up's duration_min 120"):
         parse_deck(yaml.safe_dump(d), "lathe.yaml")
+
+
+def test_the_mirror_image_spindle_has_the_mirrored_temperatures(tmp_path):
+    """Invariance: the lathe headstock numbered from the other end (tests/mirror.py for the rotor; the housing,
+    jacket and motor reflected z -> L - z) is the same machine: every node has its mirror's temperature, every
+    bearing the same heat and the DTRB the same thrusts (its rows swapped).  The jacket has one coolant node here,
+    since its flow runs along +z in either numbering and would otherwise differ."""
+    from spindlesim.model.build import build_rotor
+    from spindlesim.model.thermal import build_spindle_thermal
+    from spindlesim.analysis.spindle_thermal import SpindleThermal
+    from tests.mirror import mirror_deck
+
+    d = _lathe_doc()
+    st = d["spindle_thermal"]
+    st["tolerance_K"] = 1e-6
+    st["cooling_jacket"].update(start_mm=110, segments=1)
+    L = sum(e[2] for e in d["shaft"]["elements"])
+    m = mirror_deck(d)
+    h = m["spindle_thermal"]["housing"]
+    h["segments"] = list(reversed(h["segments"]))
+    h["start_mm"] = L - (st["housing"]["start_mm"] + sum(r[2] for r in st["housing"]["segments"]))
+    for key in ("cooling_jacket", "motor"):
+        sec = m["spindle_thermal"][key]
+        sec["start_mm"] = L - (st[key]["start_mm"] + st[key]["length_mm"])
+
+    def solve(doc, name):
+        path = tmp_path / name
+        path.write_text(yaml.safe_dump(doc))
+        deck = load_deck(path).deck
+        rotor = build_rotor(deck)
+        return SpindleThermal(rotor, build_spindle_thermal(deck, rotor)).steady(1000.0)
+
+    a, b = solve(d, "a.yaml"), solve(m, "b.yaml")
+    n_s, n_h = len(d["shaft"]["elements"]), len(st["housing"]["segments"])
+
+    def mirrored(name):
+        for part, n in (("shaft", n_s), ("housing", n_h)):
+            if name.startswith(part + "["):
+                return f"{part}[{n - 1 - int(name[len(part) + 1:-1])}]"
+        return name
+
+    assert set(a.temperatures_C) == {mirrored(n) for n in b.temperatures_C}
+    for n, t in a.temperatures_C.items():
+        assert b.temperatures_C[mirrored(n)] == pytest.approx(t, abs=1e-4), n
+    for n in ("front_dtrb", "rear_roller"):
+        assert b.bearings[n].total_W == pytest.approx(a.bearings[n].total_W, rel=1e-5)
+    assert b.bearings["front_dtrb"].row_thrust_N[::-1] == pytest.approx(a.bearings["front_dtrb"].row_thrust_N, rel=1e-5)
+    assert a.temperatures_C["bearing:front_dtrb:inner"] > 25.0  # a warm state, not a trivial one
