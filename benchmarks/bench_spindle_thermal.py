@@ -4,7 +4,7 @@
 * a two-hour warm-up with five speed steps (4000, 8000, 12,000, 8000 rpm, stop; 25 instants), the bearing
   states updated as the temperatures change: target under 10 s;
 * Campbell with the thermal equilibrium re-solved at each of 50 speeds (0-13,000 rpm, below the front pair's
-  runaway near 14,000 rpm), side by side with the same diagram with speed effects only (the bearings'
+  runaway near 18,000 rpm), side by side with the same diagram with speed effects only (the bearings'
   quasi-static states re-solved at every speed at the assembly temperature): target within 3x.
 
 Deck: decks/milling_spindle.yaml (section spindle_thermal: housing, cooling jacket, motor, oil-air); and the
