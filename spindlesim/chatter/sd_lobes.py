@@ -81,10 +81,6 @@ class _Grouped:
         for (_, p), r in zip(pieces, radii):
             out[p] = r
         return out
-        radii = parallel_map(lambda ps: ps[0].spectral_radius(self.local[s_idx[ps[1]]], depth[ps[1]]), sels)
-        for (_, sel), r in zip(sels, radii):
-            out[sel] = r
-        return out
 
     def critical(self, s: int, depth: float):
         return self.problems[self.group[s]].critical(int(self.local[s]), depth)
