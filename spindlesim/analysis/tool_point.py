@@ -123,7 +123,8 @@ def tool_point_series(rotor: "Rotor | OperatingPoints", speeds_rpm, node: int | 
     if not exact and len(speeds) > 2:
         check = (float(speeds[0]), float(speeds[-1]))
         basis = points.basis(("tool point", n_node, check), lambda: checked_basis(
-            r, points.shaft, list(states), 8, extra_dofs=tuple(tip), criterion=ToolPointModesMatch(tip)))
+            r, points.shaft, list(states), 8, extra_dofs=tuple(tip), criterion=ToolPointModesMatch(tip),
+            candidate=points.last_basis("tool point")))
         if basis is not None:
             model = f"reduced: {basis.size} of {size} coordinates"
     eye = np.eye(size)[:, tip]
