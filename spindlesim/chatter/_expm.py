@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["expm_batch"]
+__all__ = ["expm_batch", "van_loan_blocks"]
 
 _B = (64764752532480000.0, 32382376266240000.0, 7771770303897600.0, 1187353796428800.0,
       129060195264000.0, 10559470521600.0, 670442572800.0, 33522128640.0, 1323241920.0,
@@ -64,3 +64,51 @@ def expm_batch(A: np.ndarray) -> np.ndarray:
         sq = s > i
         R[sq] = R[sq] @ R[sq]
     return R.reshape(shape)
+
+
+def _poly(powers: list, coef) -> np.ndarray:
+    """sum coef[k] powers[k] over a stack; powers[0] is the identity (added on the diagonal only)."""
+    n = powers[1].shape[-1]
+    out = np.zeros_like(powers[1])
+    for c, P in zip(coef[1:], powers[1:]):
+        out += c * P
+    out[..., np.arange(n), np.arange(n)] += coef[0]
+    return out
+
+
+def van_loan_blocks(F: np.ndarray, G: np.ndarray, norm: np.ndarray):
+    """(exp F, phi1(F) G, phi2(F) G) for stacks F [k, n, n] and G [k, n, r], phi1(x) = (e^x - 1) / x,
+    phi2(x) = (e^x - 1 - x) / x^2: the blocks (1, 1), (1, 2) and (1, 3) / c of exp Z,
+    Z = [[F, G, 0], [0, 0, c I], [0, 0, 0]], from the same Pade approximant [m/m] of Z as
+    :func:`expm_batch` (m chosen from ``norm``, the largest 1-norm of the Z, as there) without forming
+    Z.  With N = [[0, c I], [0, 0]] (N^2 = 0) a polynomial p(Z) has the blocks p(F), sum p_k F^(k-1) G
+    and c sum p_k F^(k-2) G; the approximant's block-triangular solve q(Z) X = p(Z) has
+    X22 = I + 2 (b1 / b0) N and needs q(F) alone (order n instead of n + 2 r):
+    X12 = q(F)^-1 2 odd(F) G, X13 / c = q(F)^-1 2 (F odd3(F) G - (b1 / b0) (F even1(F) G - odd(F) G)),
+    U = F odd(F^2), odd3 and even1 the odd and even sums without their first term, over F^2.  None when
+    the norm needs the degree 13 with scaling (then use :func:`expm_batch`)."""
+    for theta, b in _LOW:
+        if norm <= theta:
+            break
+    else:
+        return None
+    n, r = F.shape[-1], G.shape[-1]
+    F2 = F @ F
+    powers = [None, F2]  # I, F^2, F^4, ...
+    for _ in range((len(b) - 1) // 2 - 1):
+        powers.append(powers[-1] @ F2)
+    odd = _poly(powers, b[1::2])
+    even = _poly(powers, b[0::2])
+    U = F @ odd
+    PG = [G] + [P @ G for P in powers[1:]]  # F^(2j) G
+
+    def comb(coef):
+        return sum(c * X for c, X in zip(coef, PG))
+
+    oG, odd3G, even1G = comb(b[1::2]), comb(b[3::2]), comb(b[2::2])
+    rhs = np.empty(F.shape[:-1] + (n + 2 * r,))
+    rhs[..., :n] = even + U
+    rhs[..., n:n + r] = 2.0 * oG
+    rhs[..., n + r:] = 2.0 * (F @ odd3G - (b[1] / b[0]) * (F @ even1G - oG))
+    X = np.linalg.solve(even - U, rhs)
+    return X[..., :n], X[..., n:n + r], X[..., n + r:]

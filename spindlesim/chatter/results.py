@@ -14,6 +14,10 @@ __all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe
 STABLE_GROWTH, DECAYED, DIED_OUT = 0.999, 0.1, 1e-6
 
 
+#: limit depths this close to the smallest are a tie for :attr:`LobeDiagram.minimum` (round-off of the depth
+#: search, whose tolerance is 1e-4)
+MINIMUM_TIE_RTOL = 1e-9
+
 @dataclass(frozen=True, eq=False)
 class LobeCurve:
     """One stability lobe: ``lobe`` = number of whole chatter waves per tooth period.
@@ -119,9 +123,14 @@ class LobeDiagram:
 
     @property
     def minimum(self) -> tuple[float, float]:
-        """(speed [rpm], depth [m]) of the smallest limit depth over the speed range."""
-        k = int(np.nanargmin(self.limit_depth_m))
-        return float(self.speed_rpm[k]), float(self.limit_depth_m[k])
+        """(speed [rpm], depth [m]) of the smallest limit depth over the speed range; limits within
+        ``MINIMUM_TIE_RTOL`` of it are a tie, and the lowest of their speeds is reported (two speeds of the milling
+        deck share the minimum to the last bit: which one came first must not hang on round-off)."""
+        d = np.asarray(self.limit_depth_m, float)
+        lo = float(np.nanmin(d))
+        ties = np.flatnonzero(d <= lo * (1.0 + MINIMUM_TIE_RTOL))
+        k = int(ties[np.argmin(np.asarray(self.speed_rpm, float)[ties])])
+        return float(self.speed_rpm[k]), float(d[k])
 
 
 @dataclass(frozen=True, eq=False)

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.sparse.linalg import ArpackNoConvergence, eigs
 
-from ._expm import expm_batch
+from ._expm import expm_batch, van_loan_blocks
 from .state_space import ToolPointModel
 
 __all__ = ["SdProblem", "CriticalMultiplier", "spectral_radius"]
@@ -231,35 +231,53 @@ class SdProblem:
         # exp of [[A_i dt, D_i dt, 0], [0, 0, I_r], [0, 0, 0]] = [[P, Phi0 D, Phi1 D], ...] (Van Loan);
         # steps out of cut (K_i = 0) share one exponential per evaluation
         E = len(s_idx)
-        size = n + (2 if self.order == 1 else 1) * r
         free = ~np.any(K != 0.0, axis=(2, 3))  # [E, m]
         cut = ~free
         # the blocks D dt / g and c I are scaled so that the 1-norm follows A_i dt (a low Pade degree, no
         # squaring); the exponential's (1, 2) block is linear in the (1, 2) block of Z, the (1, 3) block in
         # the product of the (1, 2) and (2, 3) blocks, so Phi0 D = g X12 and Phi1 D = g X13 / c
-        Z = np.zeros((E, m, size, size))
-        Z[..., :n, :n] = Ai * dt
+        F = Ai * dt
         Dd = D * dt
-        g = np.maximum(np.abs(Dd).sum(axis=-2).max(axis=-1) / np.maximum(np.abs(Z[..., :n, :n]).sum(axis=-2).max(
+        g = np.maximum(np.abs(Dd).sum(axis=-2).max(axis=-1) / np.maximum(np.abs(F).sum(axis=-2).max(
             axis=-1), 1e-300), 1.0)[..., None, None]
-        Z[..., :n, n:n + r] = Dd / g
-        c = 2.0 ** -5
+        Gs = Dd / g
+        c = 2.0 ** -5 if self.order == 1 else 0.0
+        P = np.empty((E, m, n, n))
+        Phi0D, Phi1D = np.empty((E, m, n, r)), np.empty((E, m, n, r))
+        e_free = np.flatnonzero(free.any(axis=1))
+        first = free[e_free].argmax(axis=1)
+        # cut steps, and one exponential per evaluation for the steps out of cut (K_i = 0)
+        for sel, F_k, G_k in ((cut, F[cut], Gs[cut]), (None, F[e_free, first], Gs[e_free, first])):
+            if not len(F_k):
+                continue
+            X = self._exponentials(F_k, G_k, c)
+            if sel is None:
+                counts = free[e_free].sum(axis=1)
+                P[free], Phi0D[free], Phi1D[free] = (np.repeat(x, counts, axis=0) for x in X)
+            else:
+                P[sel], Phi0D[sel], Phi1D[sel] = X
+        Phi0D *= g
+        Phi1D *= g
         if self.order == 1:
-            Z[..., n:n + r, n + r:] = c * np.eye(r)
-        X = np.empty_like(Z)
-        X[cut] = expm_batch(Z[cut])
-        if free.any():
-            e_free = np.flatnonzero(free.any(axis=1))
-            first = free[e_free].argmax(axis=1)
-            Xf = expm_batch(Z[e_free, first])
-            X[free] = np.repeat(Xf, free[e_free].sum(axis=1), axis=0)
-        P, Phi0D = X[..., :n, :n], g * X[..., :n, n:n + r]
-        if self.order == 1:
-            Phi1D = (g / c) * X[..., :n, n + r:]
             R0, R1 = Phi0D - Phi1D, Phi1D
         else:
             R0 = R1 = 0.5 * Phi0D
         return _monodromy(P, R0, R1, Cr, Yx, Yh)
+
+    @staticmethod
+    def _exponentials(F, G, c):
+        """(exp F, phi1(F) G, phi2(F) G) of the steps (Van Loan's block exponential, :mod:`._expm`); the
+        1-norm of [[F, G, 0], [0, 0, c I], [0, 0, 0]] picks the Pade degree."""
+        cols = np.maximum(np.abs(F).sum(axis=-2).max(axis=-1), np.abs(G).sum(axis=-2).max(axis=-1))
+        got = van_loan_blocks(F, G, max(float(cols.max()), c))
+        if got is not None:
+            return got
+        n, r = G.shape[-2:]
+        Z = np.zeros(F.shape[:-2] + (n + 2 * r,) * 2)
+        Z[..., :n, :n], Z[..., :n, n:n + r] = F, G
+        Z[..., n:n + r, n + r:] = c * np.eye(r)
+        X = expm_batch(Z)
+        return X[..., :n, :n], X[..., :n, n:n + r], X[..., :n, n + r:] / c if c else X[..., :n, n + r:]
 
     def spectral_radius(self, s_idx, depth) -> np.ndarray:
         """Spectral radius at (speed index, depth) pairs, built in batches of bounded memory."""

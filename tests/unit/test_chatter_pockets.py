@@ -65,3 +65,14 @@ def test_a_pocket_between_two_grid_speeds_is_not_preferred():
     assert pockets[0].peak_speed_rpm == 1700.0 and pockets[0].grid_speeds == 1
     assert best_pocket(pockets).peak_speed_rpm == 1200.0 and best_pocket(pockets).grid_speeds >= 3
     assert best_pocket(stability_pockets(_diagram(cusp, speeds=coarse))).peak_speed_rpm == 1700.0
+
+
+def test_the_minimum_of_a_tie_is_at_the_lowest_speed():
+    """Two speeds whose limits agree to round-off (the milling deck's 23,910 and 24,000 rpm agree to the last bit)
+    are a tie: the lower speed is reported whichever of them round-off makes smaller, and in any order."""
+    a = 0.0007411547114381245
+    for limits in ([2e-3, a, 3e-3, a * (1 - 2.7e-16)], [2e-3, a * (1 - 2.7e-16), 3e-3, a]):
+        d = _diagram(limits, speeds=np.array([9000.0, 23910.0, 12000.0, 24000.0]))
+        assert d.minimum == (23910.0, pytest.approx(a, rel=1e-15))
+    d = _diagram([2e-3, a, a * (1 - 1e-6)], speeds=np.array([9000.0, 23910.0, 24000.0]))  # a real difference
+    assert d.minimum[0] == 24000.0
