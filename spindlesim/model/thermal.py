@@ -85,7 +85,8 @@ def build_spindle_thermal(deck: Any, rotor: Rotor) -> SpindleThermalModel | None
     mat = h.material
     housing_solid = Solid(mat.conductivity_W_mK, mat.density_kg_m3, mat.specific_heat_J_kgK)
     housing = tuple(HousingSegment(r[2] * mm, r[0] * mm, r[1] * mm) for r in h.segments)
-    sets = tuple(_SETS[e.type](e, float(rotor.node_z_m[e.node - 1]) - z0) for _, e in network_bearings(deck.bearings)[0])
+    entries = network_bearings(deck.bearings)[0]
+    sets = tuple(_SETS[e.type](e, float(rotor.node_z_m[e.node - 1]) - z0) for _, e in entries)
     jacket = None
     if sec.cooling_jacket is not None:
         j = sec.cooling_jacket

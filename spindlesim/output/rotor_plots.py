@@ -36,7 +36,8 @@ def static_figure(r: StaticResult):
     ax1.set_ylabel("deflection [um]")
     F = r.applied_force_N
     fz = f", Fz {g(r.applied_axial_force_N)} N" if r.axial_displacement_m is not None else ""
-    ax1.set_title(f"Static deflection under Fx {g(F[0])} N, Fy {g(F[1])} N{fz} (applied{', gravity included' if r.gravity_m_s2 else ', no gravity'}); "
+    grav = ", gravity included" if r.gravity_m_s2 else ", no gravity"
+    ax1.set_title(f"Static deflection under Fx {g(F[0])} N, Fy {g(F[1])} N{fz} (applied{grav}); "
                   f"stiffness at node {r.stiffness_node + 1} {r.stiffness_dof}: "
                   f"{r.static_stiffness_N_m / 1e6:.3g} N/um", fontsize=9)
     ax1.legend()

@@ -38,7 +38,8 @@ class WarmUpSeries:
 class ThermalTable:
     """What the figures draw, as plain arrays (sent to the figure process): along ``x`` (speeds [rpm] or
     times [s]), per bearing its rings' temperatures [degC] and its largest row thrust [N], the motor's,
-    the tool tip's axial and radial (x, y) drift [m], the speed at each point, the natural frequencies [Hz] and the minimum
+    the tool tip's axial and radial (x, y) drift [m],
+    the speed at each point, the natural frequencies [Hz] and the minimum
     stable depth of cut [m] (warm-up)."""
 
     x: np.ndarray
@@ -71,6 +72,10 @@ def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: boo
         np.array([np.nan if s.tool_tip_axial_drift_m is None else s.tool_tip_axial_drift_m for s in states], float),
         None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm,
         None if min_depth_m is None else np.asarray(min_depth_m, float), _radial(states))
+
+
+_THRUST = "axial load each row carries (its operating preload; NaN: a bearing without rows' thrust)"
+_ANGLE = "mean over the rolling elements of the row (a DTRB: its cone and cup angles)"
 
 
 def _radial(states) -> np.ndarray:
@@ -124,11 +129,11 @@ def _common(g: str, states, bearings, nodes, sources, boundaries, axis: str) -> 
         f"{g}/stored_W": Data(np.array([s.stored_W for s in states]), "W", dims,
                               "generated - removed: 0 at a steady state, the heat warming the parts in a warm-up"),
         f"{g}/row_thrust_N": Data(_per_bearing(states, bearings, rows, "row_thrust_N"), "N", dims + ("bearing", "row"),
-                                  "axial load each row carries (its operating preload; NaN: a bearing without rows' thrust)", fill_nan=True),
+                                  _THRUST, fill_nan=True),
         f"{g}/contact_angle_inner_deg": Data(_per_bearing(states, bearings, rows, "contact_angle_inner_deg"), "degree",
-                                             dims + ("bearing", "row"), "mean over the rolling elements of the row (a DTRB: its cone and cup angles)", fill_nan=True),
+                                             dims + ("bearing", "row"), _ANGLE, fill_nan=True),
         f"{g}/contact_angle_outer_deg": Data(_per_bearing(states, bearings, rows, "contact_angle_outer_deg"), "degree",
-                                             dims + ("bearing", "row"), "mean over the rolling elements of the row (a DTRB: its cone and cup angles)", fill_nan=True),
+                                             dims + ("bearing", "row"), _ANGLE, fill_nan=True),
         f"{g}/axial_offset_m": Data(np.array([[s.axial_offsets_m[b] for b in bearings] for s in states]), "m",
                                     dims + ("bearing",), "growth of the shaft minus that of the housing from the "
                                     "housing's front face to the bearing"),

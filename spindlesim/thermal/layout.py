@@ -121,7 +121,8 @@ class BearingSet:
     def balls_mass_kg(self) -> float:
         """Mass of the rolling elements (balls or rollers) [kg]."""
         if self.element == "roller":
-            return self.balls * self.ball.density_kg_m3 * 0.25 * math.pi * self.ball_diameter_m ** 2 * self.roller_length_m
+            volume = 0.25 * math.pi * self.ball_diameter_m ** 2 * self.roller_length_m
+            return self.balls * self.ball.density_kg_m3 * volume
         return self.balls * self.ball.density_kg_m3 * math.pi * self.ball_diameter_m ** 3 / 6.0
 
 

@@ -127,7 +127,8 @@ class _Table:
         t = float(t_C)
         ts = self.t
         if not ts[0] - 1e-9 <= t <= ts[-1] + 1e-9:
-            raise PropertyRangeError(f"{self.name} properties are tabulated for {ts[0]:g}..{ts[-1]:g} degC, not {t:g} degC")
+            raise PropertyRangeError(f"{self.name} properties are tabulated for {ts[0]:g}..{ts[-1]:g} degC, "
+                                     f"not {t:g} degC")
         i = min(max(bisect.bisect_right(ts, t) - 1, 0), len(ts) - 2)
         w = (t - ts[i]) / (ts[i + 1] - ts[i])
         rho, k, cp = ((1.0 - w) * c[i] + w * c[i + 1] for c in self.cols)
