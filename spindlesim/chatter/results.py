@@ -14,9 +14,9 @@ __all__ = ["LobeCurve", "StabilityMap", "LobeDiagram", "SimulationResult", "lobe
 STABLE_GROWTH, DECAYED, DIED_OUT = 0.999, 0.1, 1e-6
 
 
-#: limit depths this close to the smallest are a tie for :attr:`LobeDiagram.minimum` (round-off of the depth
-#: search, whose tolerance is 1e-4)
-MINIMUM_TIE_RTOL = 1e-9
+#: limit depths this close to the smallest are a tie for :attr:`LobeDiagram.minimum`: the semi-discretization's
+#: depth search (``rtol``) knows them to 1e-4, so which of two such speeds is lower is not known
+MINIMUM_TIE_RTOL = 1e-4
 
 @dataclass(frozen=True, eq=False)
 class LobeCurve:
@@ -124,8 +124,9 @@ class LobeDiagram:
     @property
     def minimum(self) -> tuple[float, float]:
         """(speed [rpm], depth [m]) of the smallest limit depth over the speed range; limits within
-        ``MINIMUM_TIE_RTOL`` of it are a tie, and the lowest of their speeds is reported (two speeds of the milling
-        deck share the minimum to the last bit: which one came first must not hang on round-off)."""
+        ``MINIMUM_TIE_RTOL`` of it are a tie, and the lowest of their speeds is reported (the milling deck's
+        23,910 and 24,000 rpm straddle the bottom of a lobe and agree to 1e-5: which one is reported must not
+        hang on the depth search's last step)."""
         d = np.asarray(self.limit_depth_m, float)
         lo = float(np.nanmin(d))
         ties = np.flatnonzero(d <= lo * (1.0 + MINIMUM_TIE_RTOL))

@@ -19,7 +19,8 @@
 4. Every local maximum of rho below that point which comes within ``peak_check`` (0.9) of 1 is
    maximised between its neighbours (bounded Brent), so an island thinner than the grid step is
    caught when its peak shows in the grid values; then the bracket is refined by the ITP method
-   (regula falsi with bisection's worst case) on rho(a) - 1 to a relative depth tolerance ``rtol``.
+   (regula falsi with bisection's worst case) to a relative depth tolerance ``rtol``: rho(a) - 1 decides
+   the side, the interpolation follows the multiplier that is unstable at the bracket's upper end.
 5. At the boundary the critical multiplier gives the kind (hopf/flip), the dominant chatter
    frequency and the lobe number; lobes are the boundary segments of one (kind, number).
 6. Error control: rho at the limit with about half the steps estimates the depth's discretisation
@@ -41,7 +42,7 @@ from scipy.optimize import minimize_scalar
 
 from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
-from .semi_discretization import SdProblem, workers, parallel_map
+from .semi_discretization import N_MULTIPLIERS, SdProblem, workers, parallel_map
 from .state_space import ToolSource, as_state_space, tool_at_speeds
 
 __all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_STEPS"]
@@ -70,16 +71,20 @@ class _Grouped:
             self.group[sel], self.local[sel] = g, np.arange(len(sel))
 
     def spectral_radius(self, s_idx, depth) -> np.ndarray:
+        return np.abs(self.multipliers(s_idx, depth)[:, 0])
+
+    def multipliers(self, s_idx, depth) -> np.ndarray:
+        """The largest multipliers [E, N_MULTIPLIERS] (largest first; NaN where a model has fewer)."""
         s_idx, depth = np.asarray(s_idx), np.asarray(depth, float)
-        out = np.empty(len(s_idx))
+        out = np.full((len(s_idx), N_MULTIPLIERS), np.nan, complex)
         pieces = []  # each step count's speeds, shared among the worker threads
         for g, prob in enumerate(self.problems):
             idx = np.flatnonzero(self.group[s_idx] == g)
             if len(idx):
                 pieces += [(prob, p) for p in np.array_split(idx, min(len(idx), workers()))]
-        radii = parallel_map(lambda t: t[0].spectral_radius(self.local[s_idx[t[1]]], depth[t[1]]), pieces)
-        for (_, p), r in zip(pieces, radii):
-            out[p] = r
+        mults = parallel_map(lambda t: t[0].multipliers(self.local[s_idx[t[1]]], depth[t[1]]), pieces)
+        for (_, p), mu in zip(pieces, mults):
+            out[p, :mu.shape[1]] = mu
         return out
 
     def critical(self, s: int, depth: float):
@@ -138,9 +143,14 @@ class _Depths:
         return True
 
 
-def _march(prob: _Grouped, grid: _Depths, S: int) -> tuple[np.ndarray, np.ndarray]:
-    """rho [S, D] (NaN where not evaluated) and the index of the first unstable depth (-1: none)."""
+def _march(prob: _Grouped, grid: _Depths, mu0: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """rho [S, D] (NaN where not evaluated), the index of the first unstable depth (-1: none) and the
+    largest multipliers at that depth and the one below it [S, 2, k] (index 1: the first unstable;
+    ``mu0`` [S, k] those near zero depth)."""
+    S = len(mu0)
     rho = np.full((S, len(grid.values)), np.nan)
+    last = np.full((S, 2, N_MULTIPLIERS), np.nan, complex)
+    last[:, 1] = mu0
     first = np.full(S, -1)
     pending = np.ones(S, bool)
     extra = np.zeros(S, bool)
@@ -151,14 +161,18 @@ def _march(prob: _Grouped, grid: _Depths, S: int) -> tuple[np.ndarray, np.ndarra
                 break
             rho = np.concatenate([rho, np.full((S, len(grid.values) - rho.shape[1]), np.nan)], axis=1)
         idx = np.flatnonzero(pending | extra)
-        rho[idx, j] = prob.spectral_radius(idx, np.full(len(idx), grid.values[j]))
+        mu = prob.multipliers(idx, np.full(len(idx), grid.values[j]))
+        rho[idx, j] = np.abs(mu[:, 0])
+        now = pending[idx]
+        last[idx[now], 0] = last[idx[now], 1]
+        last[idx[now], 1] = mu[now]
         extra[:] = False
         hit = pending & (rho[:, j] >= 1.0)
         first[hit] = j
         pending &= ~hit
         extra[hit] = j + 1 < len(grid.values)
         j += 1
-    return rho, first
+    return rho, first, last
 
 
 def _brackets(prob, depths, rho, rho0, first, peak_check):
@@ -193,14 +207,31 @@ def _brackets(prob, depths, rho, rho0, first, peak_check):
     return lo, hi, f_lo, f_hi
 
 
-def _itp(prob, s_idx, lo, hi, f_lo, f_hi, rtol: float, n0: int = 1):
+def _follow(M_lo: np.ndarray, mu_hi: np.ndarray, f_lo: np.ndarray) -> np.ndarray:
+    """|mu| - 1 of the multiplier among ``M_lo`` [E, k] nearest ``mu_hi`` [E] (the one that is unstable at the
+    bracket's upper end), at most ``f_lo``; ``f_lo`` where either is unknown (NaN)."""
+    d = np.abs(M_lo - mu_hi[:, None])
+    d = np.where(np.isfinite(d), d, np.inf)
+    j = np.argmin(d, axis=1)
+    g = np.abs(M_lo[np.arange(len(j)), j]) - 1.0
+    return np.where(np.isfinite(d[np.arange(len(j)), j]), np.minimum(g, f_lo), f_lo)
+
+
+def _itp(prob, s_idx, lo, hi, f_lo, f_hi, rtol: float, M_lo=None, mu_hi=None, n0: int = 1):
     """Root of f = rho - 1 in each bracket (f_lo < 0 <= f_hi) by the ITP method (Oliveira and
     Takahashi, ACM TOMS 47 (2020) 5): regula falsi, truncated and projected so that no bracket needs
     more than n0 steps beyond bisection's.  rho is the largest of several multipliers' moduli, so it
     has kinks, and a nearly undamped mode can hold it a hair below 1 up to where the chatter mode
-    overtakes it, which stalls a plain regula falsi.  Returns the roots and d rho / d a of the last
-    brackets."""
+    overtakes it, which would stall a regula falsi on rho itself: the interpolation follows the
+    multiplier that is unstable at the upper end (at the lower end the one nearest it, ``M_lo`` [E, k] the
+    largest multipliers there, ``mu_hi`` [E] the largest at the upper end; NaN: unknown, rho is used),
+    while rho alone decides which end a trial depth replaces.  Returns the roots and d|mu| / d a of the
+    followed multiplier over the last brackets."""
     a, b, fa, fb = (np.array(v, float) for v in (lo, hi, f_lo, f_hi))
+    E, k = len(a), N_MULTIPLIERS
+    M_lo = np.full((E, k), np.nan, complex) if M_lo is None else np.array(M_lo, complex)
+    mu_hi = np.full(E, np.nan, complex) if mu_hi is None else np.array(mu_hi, complex)
+    ga = _follow(M_lo, mu_hi, fa)
     eps = 0.5 * rtol * b
     n_max = np.ceil(np.log2(np.maximum((b - a) / (2 * eps), 1.0))).astype(int) + n0
     k1 = 0.2 / np.maximum(b - a, 1e-300)
@@ -212,32 +243,39 @@ def _itp(prob, s_idx, lo, hi, f_lo, f_hi, rtol: float, n0: int = 1):
         x_half = 0.5 * (a[i] + b[i])
         r = np.maximum(eps[i] * 2.0 ** (n_max[i] - j) - 0.5 * w, 0.0)
         delta = k1[i] * w * w
-        x_f = (b[i] * fa[i] - a[i] * fb[i]) / (fa[i] - fb[i])
+        x_f = (b[i] * ga[i] - a[i] * fb[i]) / (ga[i] - fb[i])
         sigma = np.sign(x_half - x_f)
         x_t = np.where(delta <= np.abs(x_half - x_f), x_f + sigma * delta, x_half)
         x = np.where(np.abs(x_t - x_half) <= r, x_t, x_half - sigma * r)
-        fx = prob.spectral_radius(s_idx[i], x) - 1.0
+        M = prob.multipliers(s_idx[i], x)
+        fx = np.abs(M[:, 0]) - 1.0
         up = fx >= 0
-        b[i[up]], fb[i[up]] = x[up], fx[up]
-        a[i[~up]], fa[i[~up]] = x[~up], fx[~up]
+        b[i[up]], fb[i[up]], mu_hi[i[up]] = x[up], fx[up], M[up, 0]
+        a[i[~up]], fa[i[~up]], M_lo[i[~up]] = x[~up], fx[~up], M[~up]
+        ga[i] = _follow(M_lo[i], mu_hi[i], fa[i])
         active &= (b - a) > 2 * eps
         j += 1
-    return 0.5 * (a + b), (fb - fa) / np.maximum(b - a, 1e-300)
+    return 0.5 * (a + b), (fb - ga) / np.maximum(b - a, 1e-300)
 
 
 def _solve(process, models, speeds, m_s, grid: _Depths, order, rtol, peak_check) -> dict:
     """Boundary, kind, frequency and lobe number at every speed for the step counts ``m_s``."""
     prob = _Grouped(process, models, speeds, m_s, order)
     S = len(speeds)
-    rho0 = prob.spectral_radius(np.arange(S), np.full(S, 1e-3 * grid.values[0]))
-    rho, first = _march(prob, grid, S)
+    mu0 = prob.multipliers(np.arange(S), np.full(S, 1e-3 * grid.values[0]))
+    rho0 = np.abs(mu0[:, 0])
+    rho, first, last = _march(prob, grid, mu0)
     depths = grid.values[:rho.shape[1]]
     lo, hi, f_lo, f_hi = _brackets(prob, depths, rho, rho0, first, peak_check)
+    on_grid = (first >= 0) & (hi == depths[np.maximum(first, 0)])  # else an island's peak, or none
     out = {"limit": np.full(S, np.nan), "freq": np.full(S, np.nan), "kind": np.full(S, "", dtype="<U4"),
            "lobe": np.full(S, -1), "slope": np.full(S, np.nan), "rho": rho, "depths": depths}
     hit = np.flatnonzero(np.isfinite(hi))
     if len(hit):
-        out["limit"][hit], out["slope"][hit] = _itp(prob, hit, lo[hit], hi[hit], f_lo[hit], f_hi[hit], rtol)
+        M_lo = np.where(on_grid[hit, None], last[hit, 0], np.nan)
+        mu_hi = np.where(on_grid[hit], last[hit, 1, 0], np.nan)
+        out["limit"][hit], out["slope"][hit] = _itp(prob, hit, lo[hit], hi[hit], f_lo[hit], f_hi[hit], rtol,
+                                                    M_lo, mu_hi)
         for s in hit:
             cm = prob.critical(int(s), float(out["limit"][s]))
             out["freq"][s], out["kind"][s], out["lobe"][s] = cm.chatter_frequency_hz, cm.kind, cm.lobe
