@@ -119,17 +119,24 @@ def parallel_map(fn, items) -> list:
 #: how many of the largest multipliers an evaluation returns (those Arnoldi resolves; the root search
 #: follows the chatter multiplier among them)
 N_MULTIPLIERS = 6
-#: Arnoldi's basis size: ARPACK's default 2k + 1 = 13 restarts often near a stability boundary, where several
-#: multipliers have nearly the same modulus; 30 takes half the time there (the milling deck's monodromy
-#: matrices at 0.99 of the limit, 178-718 states: 0.82 ms against 1.64 ms each, the same rho to 1e-14)
-ARNOLDI_BASIS = 30
+#: Arnoldi's basis: the multipliers outside the cluster near zero are about as many as the structure's states
+#: n, and ARPACK's default 2k + 1 = 13 vectors restart often when they crowd the unit circle (a rotor's
+#: dominant modes near a stability boundary).  n + 12, at least 13, at most 30: the milling deck's
+#: 18-state monodromy matrices at 0.99 of the limit (178-718 states) take 0.82 ms each against 1.64 ms
+#: with 13 (the same rho to 1e-14), while a one- or four-mode model keeps ARPACK's speed (30 vectors
+#: there: 10-15 % slower)
+ARNOLDI_BASIS = (13, 30)
 
 
-def _largest_multipliers(Phi: np.ndarray) -> np.ndarray:
+def _arnoldi_basis(n_states: int) -> int:
+    return int(np.clip(n_states + 12, *ARNOLDI_BASIS))
+
+
+def _largest_multipliers(Phi: np.ndarray, n_states: int) -> np.ndarray:
     """The N_MULTIPLIERS eigenvalues of largest modulus of each matrix [E, k], largest first: dense QR for
     small ones, Arnoldi (ARPACK, fixed start vector) above 64 states, dense on no convergence.  The
     dominant multipliers of the milling monodromy are well separated from the cluster near zero, which
-    Arnoldi resolves in a few tens of products."""
+    Arnoldi resolves in a few tens of products; ``n_states`` the structure's states (the basis size)."""
     E, N, _ = Phi.shape
     k = min(N_MULTIPLIERS, N)
     out = np.empty((E, k), complex)
@@ -141,19 +148,19 @@ def _largest_multipliers(Phi: np.ndarray) -> np.ndarray:
     for e in range(E):
         try:
             ev = eigs(Phi[e], k=k, which="LM", return_eigenvectors=False, tol=1e-12, v0=v0, maxiter=50 * N,
-                      ncv=ARNOLDI_BASIS)
+                      ncv=_arnoldi_basis(n_states))
         except ArpackNoConvergence:
             ev = np.linalg.eigvals(Phi[e])
         out[e] = ev[np.argsort(-np.abs(ev), kind="stable")[:k]]
     return out
 
 
-def _dominant_eigenpair(Phi: np.ndarray) -> tuple[complex, np.ndarray]:
+def _dominant_eigenpair(Phi: np.ndarray, n_states: int) -> tuple[complex, np.ndarray]:
     """Eigenvalue of largest modulus and its eigenvector (Arnoldi above 64 states, as for rho)."""
     if len(Phi) > 64:
         try:
             ev, V = eigs(Phi, k=N_MULTIPLIERS, which="LM", tol=1e-12, v0=np.ones(len(Phi)), maxiter=50 * len(Phi),
-                         ncv=ARNOLDI_BASIS)
+                         ncv=_arnoldi_basis(n_states))
             j = int(np.argmax(np.abs(ev)))
             return complex(ev[j]), V[:, j]
         except ArpackNoConvergence:
@@ -309,14 +316,14 @@ class SdProblem:
         starts = range(0, len(s_idx), chunk)
 
         def part(a):
-            return _largest_multipliers(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]))
+            return _largest_multipliers(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]), self.A.shape[1])
 
         return np.concatenate(parallel_map(part, starts))
 
     def critical(self, s: int, depth: float) -> CriticalMultiplier:
         """Critical multiplier, boundary kind and dominant chatter frequency at one point."""
         Phi = self.monodromy(np.array([s]), np.array([depth]))[0]
-        mu, v = _dominant_eigenpair(Phi)
+        mu, v = _dominant_eigenpair(Phi, self.A.shape[1])
         if mu.imag < 0:  # the conjugate pair member with arg in [0, pi]
             mu, v = mu.conjugate(), v.conj()
         rho = abs(mu)
