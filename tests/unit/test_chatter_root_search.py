@@ -74,3 +74,48 @@ def test_without_the_multipliers_it_falls_back_to_rho(missing):
     a, _ = sd_lobes._itp(prob, s, lo, hi, rho[s, j - 1] - 1.0, rho[s, j] - 1.0, 1e-6, M_lo, mu_hi)
     ref, _ = sd_lobes._itp(prob, s, lo, hi, rho[s, j - 1] - 1.0, rho[s, j] - 1.0, 1e-6)
     np.testing.assert_allclose(a, ref, rtol=1e-6)
+
+
+class _Bump:
+    """rho(a) = base(a) + a narrow bump at A0 that reaches above 1 between two grid depths (an island)."""
+
+    A0, WIDTH = 1.05e-3, 0.04e-3
+
+    def __init__(self, base, height):
+        self.base, self.height, self.calls = base, height, 0
+        self.speeds = np.array([10000.0])
+
+    def spectral_radius(self, s_idx, depth):
+        self.calls += len(np.atleast_1d(s_idx))
+        a = np.asarray(depth, float)
+        return self.base(a) + self.height * np.exp(-(((a - self.A0) / self.WIDTH) ** 2))
+
+
+GRID = np.linspace(0.1e-3, 2e-3, 20)  # the island at 1.05 mm lies between the grid depths 1.0 and 1.1 mm
+
+
+def _search(bump):
+    rho = bump.spectral_radius(np.zeros(len(GRID), int), GRID)[None, :]
+    rho0 = bump.spectral_radius(np.array([0]), np.array([1e-7]))
+    bump.calls = 0
+    first = np.array([int(np.argmax(rho[0] >= 1.0)) if np.any(rho[0] >= 1.0) else -1])
+    return sd_lobes._brackets(bump, GRID, rho, rho0, first, 0.9)
+
+
+def test_an_island_between_grid_depths_is_found_from_its_rise_on_the_grid():
+    """rho 0.93 + a bump of 0.1 (peak 1.03 at 1.05 mm, 0.04 mm wide): the grid depth 1.0 mm sees 0.9481, its
+    neighbours 0.9300: a rise of a quarter of the distance to 1, searched; the island bracketed."""
+    bump = _Bump(lambda a: np.full_like(a, 0.93), 0.1)
+    lo, hi, f_lo, f_hi = _search(bump)
+    assert bump.calls > 0
+    assert lo[0] < bump.A0 < 1.1e-3 and np.isfinite(hi[0]) and f_hi[0] >= 0.0 > f_lo[0]
+    assert abs(hi[0] - bump.A0) < bump.WIDTH
+
+
+def test_a_flat_mode_drifting_by_round_off_is_not_searched():
+    """A nearly undamped mode: rho = 1 - 6.7e-5 drifting by 3e-8 over the grid (the milling deck's case), the
+    first crossing at 1.6 mm: its local maxima rise 1e-4 of their distance to 1 and are not searched."""
+    bump = _Bump(lambda a: np.where(a < 1.55e-3, 1 - 6.7e-5 + 3e-8 * np.sin(4e4 * a), 1.01), 0.0)
+    lo, hi, _, _ = _search(bump)
+    assert bump.calls == 0
+    assert lo[0] == GRID[14] and hi[0] == GRID[15]  # the grid's own bracket
