@@ -32,27 +32,36 @@ METHOD = "zero order (Altintas-Budak), the FRF of each instant at every speed"
 @dataclass(frozen=True)
 class MinimumDepth:
     """Per instant: the smallest limit depth [m] over the speeds, the speed [rpm] and chatter frequency [Hz]
-    where it falls."""
+    where it falls (NaN at an instant whose lobes failed; ``failures`` says which and why)."""
 
     depth_m: np.ndarray
     speed_rpm: np.ndarray
     chatter_frequency_hz: np.ndarray
     method: str = METHOD
+    failures: tuple[str, ...] = ()
 
 
 def minimum_depth_through(points: OperatingPoints, states, process, speeds_rpm,
                           node: int | None = None) -> MinimumDepth:
     """The module note's minimum depth at each of ``states`` (``spindle_thermal.ThermalState`` instants);
-    instants that share one operating state (the two sides of a speed step) are solved once."""
+    instants that share one operating state (the two sides of a speed step) are solved once.  An instant whose
+    lobes fail (a linear-algebra or arithmetic failure) is NaN and named in ``failures``; the others are kept."""
     speeds = np.asarray(speeds_rpm, float)
     _, tip = point_dofs(points.rotor, node)
     done: dict[int, tuple[float, float, float]] = {}
-    rows = []
+    rows, failures = [], []
     for ts in states:
         key = id(ts.operating)
         if key not in done:
             sysm = points.system(ts.operating)
-            diagram = zero_order_lobes(process, state_space(sysm, np.eye(sysm.size)[:, tip]), speeds)
+            try:
+                diagram = zero_order_lobes(process, state_space(sysm, np.eye(sysm.size)[:, tip]), speeds)
+            except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
+                when = "" if ts.time_s is None else f" at {ts.time_s / 60.0:.1f} min"
+                failures.append(f"lobes{when} ({ts.speed_rpm:g} rpm) failed: {exc}")
+                done[key] = (np.nan, np.nan, np.nan)
+                rows.append(done[key])
+                continue
             lim = diagram.limit_depth_m
             if np.isfinite(lim).any():
                 i = int(np.nanargmin(lim))
@@ -61,4 +70,4 @@ def minimum_depth_through(points: OperatingPoints, states, process, speeds_rpm,
                 done[key] = (np.nan, np.nan, np.nan)
         rows.append(done[key])
     a = np.array(rows, float).reshape(len(rows), 3)
-    return MinimumDepth(a[:, 0], a[:, 1], a[:, 2])
+    return MinimumDepth(a[:, 0], a[:, 1], a[:, 2], failures=tuple(failures))

@@ -27,6 +27,10 @@ __all__ = ["ToolPointModel", "ModeSummary", "Tool", "ToolSource", "tool_at_speed
 
 log = logging.getLogger(__name__)
 _COND_LIMIT = 1e10
+#: the resolvent of a pole is never evaluated closer to it than this share of its modulus: an undamped
+#: mode's receptance at its own frequency is infinite, it is taken this far off the pole (the peak of a mode
+#: with this damping ratio).  A mode damped more than this is never affected (|j w - lambda| >= |Re lambda|).
+POLE_GAP = 1e-6
 
 
 @dataclass(frozen=True)
@@ -120,12 +124,15 @@ class ToolPointModel:
         e = self._eig
         if e is not None:
             lam, _, _, residues = e
-            R = 1.0 / (1j * w[:, None] - lam[None, :])  # [f, n]
+            R = 1.0 / _off_poles(1j * w[:, None] - lam[None, :], lam)  # [f, n]
             return (R @ residues).reshape(len(w), 2, 2)
         n = self.A.shape[0]
         out = np.empty((len(w), 2, 2), complex)
         for k, wk in enumerate(w):
-            out[k] = self.C @ np.linalg.solve(1j * wk * np.eye(n) - self.A, self.B)
+            try:
+                out[k] = self.C @ np.linalg.solve(1j * wk * np.eye(n) - self.A, self.B)
+            except np.linalg.LinAlgError:  # exactly on an undamped pole: POLE_GAP off it
+                out[k] = self.C @ np.linalg.solve(1j * wk * (1 + POLE_GAP) * np.eye(n) - self.A, self.B)
         return out
 
     def frf(self, frequency_hz: np.ndarray | None = None) -> ToolPointFrf:
@@ -208,6 +215,21 @@ class ToolPointModel:
         A = S @ self.A @ T
         return ToolPointModel(A, S @ self.B, self.C @ T,
                               f"{self.source} (modes below {max_frequency_hz:g} Hz)")
+
+
+def _off_poles(d: np.ndarray, lam: np.ndarray) -> np.ndarray:
+    """``d`` = j w - lambda [f, n] with every entry closer to its pole than POLE_GAP |lambda| moved out to that
+    distance (same direction; on the pole itself, along +j): only undamped poles can be that close."""
+    gap = POLE_GAP * np.abs(lam)[None, :]
+    near = np.abs(d) < gap
+    if not near.any():
+        return d
+    d = d.copy()
+    dn = d[near]
+    mag = np.abs(dn)
+    unit = np.where(mag > 0, dn / np.where(mag > 0, mag, 1.0), 1j)
+    d[near] = unit * np.broadcast_to(gap, d.shape)[near]
+    return d
 
 
 Tool = Union[ToolPointModel, ToolPointFrf]

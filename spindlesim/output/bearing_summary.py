@@ -81,6 +81,10 @@ def _spindle_thermal(f):
                 lines.append(f"  minimum stable depth of cut (zero order) {dm[0] * 1e3:.3g} mm cold -> "
                              f"{dm[-1] * 1e3:.3g} mm at the end; lowest {dm[k] * 1e3:.3g} mm at {t[k] / 60:.0f} min")
                 data["warm_up_min_depth_m"] = [float(v) for v in dm]
+            missing = int(np.sum(~np.isfinite(dm)))
+            if missing:
+                lines.append(f"  minimum stable depth of cut NOT COMPUTED at {missing} of {len(dm)} instants "
+                             f"(thermal.h5: warm_up/chatter, attribute not_computed)")
     return lines, data
 
 

@@ -194,4 +194,6 @@ def write_spindle_thermal(path: Path, run: RunInfo, model, series: SpeedSeries, 
             data[f"{c}/chatter_frequency_hz"] = Data(md.chatter_frequency_hz, "Hz", ("time_s",),
                                                      "chatter frequency there", fill_nan=True)
             attrs[c] = {"method": md.method}
+            if getattr(md, "failures", ()):
+                attrs[c]["not_computed"] = "; ".join(md.failures)
     return write_h5(path, run, data, attrs)

@@ -61,7 +61,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     if runaway is not None and states:  # the speed limit of the arrangement, to 2 %
         limit = speed_limit(points.thermal, states[-1], runaway[0])
         log.info("thermal speed limit between %.0f and %.0f rpm", *limit)
-    warm = None
+    warm, missing = None, []
     if model.warm_up is not None:
         w = model.warm_up
         try:
@@ -72,13 +72,30 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         freqs = []
         r = points.rotor
         for ts in instants:
-            m = modal_from_matrices(points.system(ts.operating), r.dofs, r.node_z_m, WARM_UP_MODES, ts.speed_rpm)
             f = np.full(WARM_UP_MODES, np.nan)
-            f[:len(m.frequency_hz)] = m.frequency_hz
+            try:
+                m = modal_from_matrices(points.system(ts.operating), r.dofs, r.node_z_m, WARM_UP_MODES, ts.speed_rpm)
+                f[:len(m.frequency_hz)] = m.frequency_hz
+            except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
+                missing.append(f"warm-up natural frequencies at {ts.time_s / 60.0:.1f} min ({ts.speed_rpm:g} rpm) "
+                               f"failed: {exc}")
             freqs.append(f)
         if instants:
-            warm = WarmUpSeries(instants, np.array(freqs), _minimum_depth(loaded, points, instants))
+            depth = None
+            try:
+                depth = _minimum_depth(loaded, points, instants)
+            except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
+                missing.append(f"warm-up minimum stable depth of cut failed: {exc}")
+            if depth is not None:
+                missing.extend(f"warm-up minimum stable depth of cut: {m}" for m in depth.failures)
+            warm = WarmUpSeries(instants, np.array(freqs), depth)
     series = SpeedSeries(tuple(states), runaway, limit)
+    if missing:  # a part of the analysis failed: what was computed is written, marked incomplete
+        import dataclasses
+
+        for m in missing:
+            log.warning("%s", m)
+        run_info = dataclasses.replace(run_info, complete=False, incomplete_reason="; ".join(missing))
     paths = [write_spindle_thermal(outdir / "thermal.h5", run_info, model, series, warm)]
     if states:
         table = tabulate(states, model.bearings, runaway_rpm=runaway[0] if runaway else None)
@@ -87,6 +104,10 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         table = tabulate(warm.states, model.bearings, frequency_hz=warm.frequency_hz, in_time=True,
                          min_depth_m=None if warm.minimum_depth is None else warm.minimum_depth.depth_m)
         paths.append(draw(outdir / "thermal_warm_up.png", warm_up_figure, table, d.title))
+    if missing:
+        from .status import IncompleteRun
+
+        raise IncompleteRun(f"thermal: {len(missing)} part(s) not computed: {missing[0]}", paths)
     return paths
 
 
