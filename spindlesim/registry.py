@@ -129,6 +129,9 @@ ANALYSIS_REGISTRY: tuple[Analysis, ...] = (
              runs_on=(("chatter",),),
              summary="summary:chatter",
              help="Chatter stability lobes from the tool-point FRF (rotor at every speed, tap test or file)."),
+    Analysis("tools", "tools:run", deck="tool_library", needs="a tools section", supported=True,
+             runs_on=(("rotor", "operating", "tools"),), summary="tools_summary:tools",
+             help="A tool library on the spindle: each tool's tip FRF by receptance coupling, and its lobes."),
 )
 
 #: the commands that are not one analysis, listed after the analyses' commands

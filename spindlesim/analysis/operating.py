@@ -126,6 +126,16 @@ def _solve(K: np.ndarray, r: np.ndarray, what: str) -> np.ndarray:
     piv = np.abs(np.diag(lu[0]))
     if np.all(np.isfinite(piv)) and piv.min() > 1e-11 * piv.max():
         return sla.lu_solve(lu, r, check_finite=False)
+    d = np.abs(np.diag(K))
+    if np.all(d > 0) and np.all(np.isfinite(d)):  # badly scaled rather than singular (a thin tool's tilts against
+        s = 1.0 / np.sqrt(d)                       # stiff supports): the same test on the equilibrated matrix
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", sla.LinAlgWarning)
+            lu = sla.lu_factor(s[:, None] * K * s[None, :], check_finite=False)
+        piv = np.abs(np.diag(lu[0]))
+        if np.all(np.isfinite(piv)) and piv.min() > 1e-11 * piv.max():
+            rs = np.asarray(r).reshape(len(r), -1) * s[:, None]
+            return (sla.lu_solve(lu, rs, check_finite=False) * s[:, None]).reshape(np.shape(r))
     q = np.linalg.lstsq(K, r, rcond=1e-11)[0]
     res = (K @ q - r).reshape(len(r), -1)  # each right-hand side on its own
     rr = np.asarray(r).reshape(len(r), -1)

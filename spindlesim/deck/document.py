@@ -13,7 +13,7 @@ from functools import lru_cache
 from types import UnionType
 from typing import Annotated, Any, Literal, Optional, Union, get_args, get_origin
 
-from pydantic import BaseModel, Field, create_model, model_validator
+from pydantic import AfterValidator, BaseModel, Field, create_model, model_validator
 
 from ..bearings.ball.section import BallSection
 from ..bearings.dtrb.section import DtrbSection
@@ -112,6 +112,58 @@ class ToolSection(DeckModel):
     tool: ElementRows
     """The tool's beam elements from the holder outwards; the last node is the tool tip (the default FRF point
     and the cutting point of `chatter`)."""
+
+
+def _tool_name(name: str) -> str:
+    """A tool's name names its group in tools.h5: no "/", no control character, no leading "."."""
+    if "/" in name or any(ord(c) < 32 for c in name) or name.startswith("."):
+        raise ValueError(f"a tool's name names its group in tools.h5: no '/', no control character and no leading "
+                         f"'.' (got {name!r})")
+    return name
+
+
+ToolName = Annotated[str, Field(min_length=1, max_length=64), AfterValidator(_tool_name)]
+
+
+class ToolEntry(DeckModel):
+    """One tool of the library `spindlesim tools` couples onto the spindle (receptance coupling): any of the
+    `tool:` section's parts; what the entry leaves out is the `tool:` section's."""
+
+    name: ToolName
+    """Name of the tool: its group in tools.h5, its line in the summary and the figures (unique in the list; no
+    "/", not starting with ".")."""
+    interface: Optional[ToolJoint] = None
+    """Joint between the spindle nose and this tool's holder (HSK, steep taper). None: the `tool:` section's
+    interface (and a rigid mounting where that has none)."""
+    holder: Optional[ElementRows] = None
+    """The holder's beam elements from the nose outwards. None: the `tool:` section's holder."""
+    joint: Optional[ToolJoint] = None
+    """Joint between the holder's last node and the tool's first node. None: the `tool:` section's joint."""
+    tool: Optional[ElementRows] = None
+    """The tool's beam elements from the holder outwards, the last node the tip. None: the `tool:` section's
+    tool."""
+
+
+def library_tools(deck: Any) -> list[tuple[str, ToolSection]]:
+    """Every ``tools:`` entry as a complete :class:`ToolSection` (the parts it leaves out from ``tool:``), in
+    deck order; an entry that leaves out a part the deck's ``tool:`` does not give raises ValueError naming it
+    (the loader reports it located first)."""
+    base = deck.tool
+    out = []
+    for entry in deck.tools or ():
+        parts = {}
+        for key in ("holder", "joint", "tool"):
+            value = getattr(entry, key)
+            if value is None:
+                if base is None:
+                    raise ValueError(f"tool {entry.name!r} needs {key!r} (the deck has no tool: section to take it "
+                                     "from)")
+                value = getattr(base, key)
+            parts[key] = value
+        interface = entry.interface if entry.interface is not None else (base.interface if base else None)
+        out.append((entry.name, ToolSection(holder_node=base.holder_node if base else 1, interface=interface,
+                                            **parts)))
+    return out
 
 
 class Journal(DeckModel):
@@ -307,6 +359,11 @@ def deck_model() -> type[BaseModel]:
                                       "Give this or `journal`.")),
         tool=(Optional[ToolSection], Field(None, description=_first_paragraph(ToolSection.__doc__) + " Needs "
                                            "`shaft`.")),
+        tools=(Optional[Annotated[list[ToolEntry], Field(min_length=1, max_length=100)]],
+               Field(None, description="A tool library (`spindlesim tools`): named tools, each any of the `tool:` "
+                                       "section's parts (interface, holder, joint, tool; what an entry leaves out "
+                                       "is the `tool:` section's), coupled onto the spindle by receptance "
+                                       "coupling. Needs `shaft`.")),
         journal=(Optional[Journal], Field(None, description=_first_paragraph(Journal.__doc__) + " Give this or "
                                           "`shaft`.")),
         disks=(Annotated[list[Disk], Field(max_length=1000)],

@@ -23,7 +23,7 @@ from ..registry import ANALYSIS_REGISTRY, analysis_names
 from .document import bearing_types, deck_model, keys_at
 from .errors import DeckError, DeckIssue
 from .limits import MAX_ISSUES, MAX_TEXT_CHARS, work_checks
-from .plausibility import plausibility_warnings
+from .plausibility import MIN_DIMENSION_MM, plausibility_warnings
 from .yamlmarks import load_with_marks, locate, path_str
 
 log = logging.getLogger(__name__)
@@ -173,11 +173,38 @@ def _row_checks(rows: list[list[float]], where: tuple[Any, ...], bad: list) -> N
             bad.append((where + (i, 1), f"inner_dia_mm {di} must be smaller than outer_dia_mm {do}"))
 
 
+def _tool_library_checks(d: BaseModel, bad: list) -> None:
+    """The ``tools:`` entries: a shaft to sit on, unique names, rows as the shaft's, every part given where the
+    deck has no ``tool:`` section to take it from."""
+    if not d.tools:
+        return
+    if d.shaft is None:
+        bad.append((("tools",), "a tool library needs a shaft to sit on (shaft: elements: ...)"))
+    seen: dict[str, int] = {}
+    for i, entry in enumerate(d.tools):
+        if entry.name in seen:
+            bad.append((("tools", i, "name"), f"duplicate tool name {entry.name!r} (also tools[{seen[entry.name]}])"))
+        seen[entry.name] = i
+        for key in ("holder", "tool"):
+            part = getattr(entry, key)
+            if part is not None:
+                _row_checks(part.elements, ("tools", i, key, "elements"), bad)
+        if d.tool is None:
+            missing = [k for k in ("holder", "joint", "tool") if getattr(entry, k) is None]
+            if missing:
+                bad.append((("tools", i), f"tool {entry.name!r} needs {', '.join(missing)}: the deck has no tool: "
+                                          "section to take them from"))
+
+
 def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     """Checks pydantic cannot express: element rows, node ranges, analysis names, work limits."""
     bad: list[tuple[tuple[Any, ...], str]] = []
     rows = d.shaft.elements if d.shaft is not None else []
     _row_checks(rows, ("shaft", "elements"), bad)
+    if rows and all(0 < r[0] < MIN_DIMENSION_MM and 0 < r[2] < MIN_DIMENSION_MM for r in rows):
+        bad.append((("shaft", "elements", 0, 0), f"every shaft row is under {MIN_DIMENSION_MM:g} mm in diameter and "
+                                                 f"length: were they given in metres? ({rows[0][0]:g} m = "
+                                                 f"{rows[0][0] * 1e3:g} mm); the keys are outer_dia_mm and length_mm"))
     if d.tool is not None:
         _row_checks(d.tool.holder.elements, ("tool", "holder", "elements"), bad)
         _row_checks(d.tool.tool.elements, ("tool", "tool", "elements"), bad)
@@ -188,6 +215,7 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
         n_nodes += len(d.tool.holder.elements) + len(d.tool.tool.elements) + 1 + (d.tool.interface is not None)
     elif d.tool is not None:
         bad.append((("tool",), "a tool needs a shaft to sit on (shaft: elements: ...)"))
+    _tool_library_checks(d, bad)
     has_rotor = d.shaft is not None or d.journal is not None
 
     def node_ok(path: tuple[Any, ...], node: int) -> None:

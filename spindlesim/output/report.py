@@ -64,6 +64,8 @@ CAPTIONS: dict[str, str] = {
     "transient_poincare": "Poincare map (once per revolution)",
     "chatter_lobes": "Stability lobes: limit depth of cut over spindle speed",
     "chatter_frf": "Tool-point FRF used for the stability lobes",
+    "tools_frf": "Tool library: each tool's tip receptance on the spindle (receptance coupling)",
+    "tools_lobes": "Tool library: each tool's stability lobes, minimum and recommended speed",
     "chatter_stability_map": "Stability map",
     "contact_pressure": "Contact pressure on the raceway",
     "contact_roller": "Roller profile and contact",

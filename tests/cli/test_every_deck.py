@@ -35,6 +35,7 @@ PROMISED = {
                 "/bearing/contact_angle_inner_deg", "/bearing/contact_angle_outer_deg", "/bearing/max_pressure_Pa",
                 "/bearing/life_L10_Mrev"],
     "chatter": ["/chatter/speed_rpm", "/chatter/limit_depth_m", "/chatter/chatter_frequency_hz"],
+    "tools": ["/tools/spindle/receptance", "/tools/em16_shrink_60/receptance_m_N", "/tools/em16_shrink_60/frequency_hz"],
 }
 #: thermal.h5 of a spindle's thermal model (deck section spindle_thermal)
 SPINDLE_THERMAL = ["/spindle_thermal/speed_rpm", "/spindle_thermal/temperature_C", "/spindle_thermal/heat_W",
@@ -94,10 +95,11 @@ EXAMPLES = {
     "dtrb_wheel_hub.yaml": ["dtrb"],
     "ball_single_row.yaml": ["bearing"],
     "contact_roller.yaml": ["contact"],
+    "tool_library.yaml": ["tools"],
 }
 EMBEDDED = {"bearing": "bearing", "dtrb": "dtrb", "contact": "contact", "transient": "transient",
-            "chatter": "milling_spindle", "thermal": "spindle", "coefficients": "spindle"}
-SHORT = {"campbell": ["--speeds", "0:6000:4"], "transient": ["--duration", "0.02"]}
+            "chatter": "milling_spindle", "thermal": "spindle", "coefficients": "spindle", "tools": "tool_library"}
+SHORT = {"campbell": ["--speeds", "0:6000:4"], "transient": ["--duration", "0.02"], "tools": ["--no-lobes"]}
 
 
 def _cases():
@@ -155,7 +157,8 @@ def test_every_command_on_every_deck_finishes_with_every_promised_dataset(deck, 
                                           ("unbalance", "validation/roller_rotor.yaml"),
                                           ("dtrb", "seed003_spindle_linear.yaml"),
                                           ("contact", "seed003_spindle_linear.yaml"),
-                                          ("bearing", "seed003_spindle_linear.yaml")])
+                                          ("bearing", "seed003_spindle_linear.yaml"),
+                                          ("tools", "seed003_spindle_linear.yaml")])
 def test_a_command_whose_deck_section_is_missing_is_a_deck_error(command, deck, tmp_path):
     res = CliRunner().invoke(main, [command, str(DECKS / deck), "-o", str(tmp_path / "out")])
     assert res.exit_code == 2, res.output

@@ -31,8 +31,13 @@ def test_help_text_names_what_runs_without_an_analyses_list():
     assert _help_rows() == [(", ".join(names), needs) for names, needs in DEFAULT_RUN]
 
 
+TOOLS = ("tools:\n  - {name: t, holder: {elements: [[40.0, 16.0, 50.0, 7850.0, 210.0, 80.8, 0.3, 0.0]]}, "
+         "joint: {translational_N_m: 4.0e8, rotational_Nm_rad: 2.0e6}, "
+         "tool: {elements: [[16.0, 0.0, 50.0, 14500.0, 580.0, 240.0, 0.22, 0.0]]}}\n")
+
+
 def test_a_deck_with_every_section_runs_every_analysis_in_the_help_order():
-    text = (_embedded("spindle") + "rotor_transient: {duration_s: 0.01}\n"
+    text = (_embedded("spindle") + "rotor_transient: {duration_s: 0.01}\n" + TOOLS
             + "".join(_embedded(n, title=False) for n in ("bearing", "dtrb", "contact", "transient")))
     loaded = parse_deck(text)
     help_names = [n for row, _ in _help_rows() for n in row.split(", ")]

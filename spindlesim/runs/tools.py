@@ -1,0 +1,84 @@
+"""``spindlesim tools``: the deck's tool library (``tools:``) coupled onto its spindle by receptance coupling
+(``analysis.tool_library``) at one speed, the bearings at the spindle's thermal equilibrium there when the deck
+has a ``spindle_thermal`` section; with a ``chatter:`` section each tool's lobes.  tools.h5 and PNGs.
+
+Options: ``speed_rpm`` (default: the deck's operating speed), ``lobes`` (False: the receptances only).
+"""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+from typing import Any
+
+log = logging.getLogger(__name__)
+
+
+def study(loaded: Any, options: dict | None = None, progress=None):
+    """The :class:`~spindlesim.analysis.tool_library.ToolLibraryStudy` of a loaded deck (module note)."""
+    from ..analysis.points import OperatingPoints
+    from ..analysis.tool_library import ToolLibraryStudy, couple_tools, tool_lobes
+    from ..deck import DeckError, require_rotor, require_section
+    from ..deck.document import library_tools
+    from ..model.thermal import build_spindle_thermal
+    from ..model.tool_library import build_tool_library, with_tool
+    from .common import operating_points, value_range
+
+    opts = options or {}
+    require_section(loaded, "tools", "tools", "a list of named tools (interface, holder, joint, tool)")
+    require_rotor(loaded, "tools")
+    d = loaded.deck
+    shaft_nodes = len(d.shaft.elements) + 1
+    bad = [loaded.issue(("loads", i, "node"), f"a load on node {p.node} sits on the deck's holder or tool: the tool "
+                                               f"library keeps loads on the shaft's nodes 1..{shaft_nodes} only")
+           for i, p in enumerate(d.loads) if p.node > shaft_nodes]
+    bad += [loaded.issue(("disks", i, "node"), f"a disk on node {k.node} sits on the deck's holder or tool: the tool "
+                                               f"library keeps disks on the shaft's nodes 1..{shaft_nodes} only")
+            for i, k in enumerate(d.disks) if k.node > shaft_nodes]
+    if bad:
+        raise DeckError(bad)
+    tools = library_tools(d)
+    model = build_tool_library(d, tools)
+    speed = float(opts["speed_rpm"]) if opts.get("speed_rpm") is not None else float(d.operating.speed_rpm)
+    freqs = value_range(d.frf.frequencies_hz)
+    bearings = None
+    points = operating_points(loaded)
+    if points.thermal is not None:  # the spindle's bearings at their temperatures at this speed
+        T = points.thermal_state(speed).temperatures_C
+        bearings = points.thermal.rotor_at(T)[0].bearings
+    with_lobes = d.chatter is not None and opts.get("lobes", True)
+    steps = len(tools) * (2 if with_lobes else 1)
+
+    def tick(done: int, _total: int) -> None:
+        if progress is not None:
+            progress(done, steps)
+
+    library = couple_tools(model, speed, freqs, bearings, progress=tick)
+    lobes = []
+    if with_lobes:
+        from ..chatter import build_chatter
+
+        base = Path(loaded.source).parent if not loaded.source.startswith("<") else Path.cwd()
+        spec = build_chatter(d.chatter, base)
+        for k, (name, section) in enumerate(tools):
+            rotor = with_tool(d, section)
+            thermal = build_spindle_thermal(d, rotor)
+            thermal = thermal if thermal is not None and thermal.analyses != "none" else None
+            lobes.append(tool_lobes(name, OperatingPoints(rotor, thermal), spec, speed))
+            tick(len(tools) + k + 1, steps)
+    return ToolLibraryStudy(library, tuple(lobes))
+
+
+def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
+    from ..output.drawing import draw
+    from ..output.tools_plots import receptance_figure, lobes_figure
+    from ..output.tools_writer import write_tools
+    from .common import plots_wanted
+
+    res = study(loaded, options, progress)
+    paths = [write_tools(outdir / "tools.h5", run_info, res)]
+    if plots_wanted(options or {}):
+        paths.append(draw(outdir / "tools_frf.png", receptance_figure, res.library, loaded.deck.title))
+        if res.lobes:
+            paths.append(draw(outdir / "tools_lobes.png", lobes_figure, res.lobes, loaded.deck.title))
+    return paths
