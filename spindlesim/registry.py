@@ -58,6 +58,10 @@ class Command:
     name: str
     help: str
     deck: str | None = None  # the embedded deck it runs without DECK (None: it takes no deck)
+    #: ``module:function`` in spindlesim.output summarising its file ``<name>.h5`` (as an Analysis's)
+    summary: str = ""
+    #: the file stem of that summary, when it is not the command's name
+    file: str = ""
 
 
 _ROTOR = "a rotor (shaft or journal) and operating"
@@ -140,7 +144,16 @@ TOOL_COMMANDS: tuple[Command, ...] = (
     Command("decks", "The embedded decks (defaults and examples); `decks show NAME` prints one to start from."),
     Command("schema", "The deck's JSON schema (editor completion and checking)."),
     Command("sweep", "Parameter study over any deck value (process pool or Dask), resumable.", "spindle"),
+    Command("calibrate", "Fit deck values (joints, bearing damping ...) to measured FRFs: calibrated deck, 95 % "
+                         "intervals.", "tool_library", summary="calibration_summary:calibration", file="calibration"),
 )
+
+
+def file_summaries() -> dict[str, str]:
+    """file stem -> ``module:function`` summarising ``<stem>.h5``: every analysis's, and the commands' that
+    write a file of their own."""
+    return {**{a.name: a.summary for a in ANALYSIS_REGISTRY if a.summary},
+            **{c.file or c.name: c.summary for c in TOOL_COMMANDS if c.summary}}
 
 
 def analysis(name: str) -> Analysis:

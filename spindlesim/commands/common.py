@@ -180,15 +180,23 @@ def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_n
     import gc
 
     from ..runs import run_analysis, run_info_for
-    from ..runs.status import IncompleteRun
-    from ..deck import DeckError
 
     loaded = load_or_default(deck, default_name)
     gc.freeze()  # the modules imported so far are never garbage: later collections need not walk them
     out = resolve_outdir(outdir, loaded)
     update, close = progress_reporter(name)
+    run_command(name, loaded, lambda: run_analysis(name, loaded, out, options, progress=update,
+                                                   run=run_info_for(loaded, " ".join(sys.argv))), close)
+
+
+def run_command(name: str, loaded, call: Callable[[], list], close: Callable[[], None]) -> None:
+    """``call()`` (a run that writes files and returns their paths), then the paths and the summary; how it ended
+    becomes an exit code and one line (a deck error, an incomplete or interrupted run, a solver failure)."""
+    from ..deck import DeckError
+    from ..runs.status import IncompleteRun
+
     try:
-        paths = run_analysis(name, loaded, out, options, progress=update, run=run_info_for(loaded, " ".join(sys.argv)))
+        paths = call()
     except DeckError as exc:
         close()
         report_deck_error(exc)

@@ -22,6 +22,7 @@ from ..bearings.types import BEARING_TYPES
 from ..contact.section import ContactSection
 from ..thermal.section import SpindleThermalSection
 from ..fields import AnyNumber, DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
+from .studies import CalibrationSection
 from .transient import RotorTransientSection, TransientSection
 
 FrequencyRange = Range  # {start, stop, count}
@@ -387,6 +388,8 @@ def deck_model() -> type[BaseModel]:
         unbalance=(Optional[UnbalanceSection], Field(None, description="An unbalance and the synchronous response "
                                                      "to it over speed (`spindlesim unbalance`); `rotor_transient` "
                                                      "applies it too.")),
+        calibration=(Optional[CalibrationSection], Field(None, description=_first_paragraph(
+            CalibrationSection.__doc__) + " Not run by `spindlesim run`.")),
         sweep=(Optional[SweepSection], Field(None, description="A parameter study: `spindlesim sweep DECK` runs "
                                              "`analysis` for every case of the parameters' values (not run by "
                                              "`spindlesim run`).")),

@@ -244,6 +244,9 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
             where = getattr(getattr(d, sec), key)
             if where is not None:
                 node_ok((sec, key, "node"), where.node)
+    if d.calibration is not None:
+        for i, m in enumerate(d.calibration.measurements):
+            node_ok(("calibration", "measurements", i, "node"), m.node)
     if d.unbalance is not None:
         node_ok(("unbalance", "node"), d.unbalance.node)
         node_ok(("unbalance", "output", "node"), d.unbalance.output.node)
@@ -393,5 +396,15 @@ def default_deck(name: str = "spindle") -> LoadedDeck:
     return parse_deck(text, f"<default:{name}>")
 
 
-__all__ = ["ANALYSES", "LoadedDeck", "available_analyses", "default_deck", "load_deck",
+def deck_folder(loaded: LoadedDeck) -> Path:
+    """The folder a deck's relative file paths (measured FRFs) are taken from: the deck file's, the package's
+    for an embedded deck, the working directory for a deck given as text."""
+    if loaded.source.startswith("<default:"):
+        return Path(str(resources.files("spindlesim.decks")))
+    if loaded.source.startswith("<"):
+        return Path.cwd()
+    return Path(loaded.source).parent
+
+
+__all__ = ["ANALYSES", "LoadedDeck", "available_analyses", "default_deck", "deck_folder", "load_deck",
            "parse_deck", "require_rotor"]

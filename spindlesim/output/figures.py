@@ -7,8 +7,6 @@ matplotlib when a figure process draws for it).
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -53,18 +51,10 @@ def fixed_layout(fig: Figure, left_in: float = 0.9, right_in: float = 0.25, top_
 
 def save_figure(fig: Figure, path: str | Path, dpi: int = 110) -> Path:
     """Save ``fig`` as PNG via a temporary file and rename; the file gets the umask's mode (0644 under 022)."""
-    from .hdf5 import publish
+    from .hdf5 import atomic
 
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp.png", dir=path.parent)
-    os.close(fd)
-    try:
+    with atomic(path, ".tmp.png") as tmp:
         # zlib level 3 instead of PIL's 6: a third less time for files about 10 % larger
         fig.savefig(tmp, dpi=dpi, format="png", pil_kwargs={"compress_level": 3})
-        publish(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
     return path

@@ -38,13 +38,15 @@ import threading
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from pathlib import Path
-from typing import Any, Mapping, Sequence
+from contextlib import contextmanager
+from typing import Any, Iterator, Mapping, Sequence
 
 import numpy as np
 
 log = logging.getLogger(__name__)
 
-__all__ = ["RunInfo", "Data", "labels", "five_dof", "write_h5", "provenance", "file_mode", "publish"]
+__all__ = ["RunInfo", "Data", "labels", "five_dof", "write_h5", "provenance", "file_mode", "publish",
+           "write_text_atomic"]
 
 #: Datasets written by modules that do not declare their NaN fill themselves (the sweep summary):
 #: NaN there marks a case without that value.  Patterns match the full dataset path.
@@ -132,6 +134,30 @@ def publish(tmp: str | Path, path: str | Path) -> None:
     """Give ``tmp`` (a mkstemp file, mode 0600) the umask's mode and rename it to ``path``."""
     os.chmod(tmp, file_mode())
     os.replace(tmp, path)
+
+
+@contextmanager
+def atomic(path: str | Path, suffix: str = ".tmp") -> Iterator[str]:
+    """A temporary file next to ``path`` (``<name>.<random><suffix>``) to write; on success it is published
+    (:func:`publish`) as ``path``, on any failure removed: a reader never sees a half-written file."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=suffix, dir=path.parent)
+    os.close(fd)
+    try:
+        yield tmp
+        publish(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def write_text_atomic(path: str | Path, text: str) -> Path:
+    """``text`` as UTF-8 to ``path`` through a temporary file renamed into place (:func:`atomic`)."""
+    with atomic(path) as tmp:
+        Path(tmp).write_text(text, encoding="utf-8")
+    return Path(path)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -326,30 +352,21 @@ def write_h5(path: str | Path, run: RunInfo, datasets: Mapping[str, Any],
     _check(path, run, entries, group_attrs)
     entries.update(_index_coordinates(entries))
 
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    try:
-        with h5py.File(tmp, "w") as f:
-            for k, v in provenance().items():
-                f.attrs[k] = v
-            f.attrs["deck_sha256"] = run.deck_sha256
-            f.attrs["deck_text"] = run.deck_text
-            f.attrs["deck_source"] = run.deck_source
-            f.attrs["command_line"] = run.command_line
-            f.attrs["complete"] = run.complete
-            if run.incomplete_reason:
-                f.attrs["incomplete_reason"] = run.incomplete_reason
-            for name, (d, v) in entries.items():
-                _create(f, name, d, v)
-            _attach_scales(f, entries)
-            for group, attrs in group_attrs.items():
-                g = f.require_group(group)
-                for k, v in attrs.items():
-                    g.attrs[k] = v
-        publish(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    with atomic(path) as tmp, h5py.File(tmp, "w") as f:
+        for k, v in provenance().items():
+            f.attrs[k] = v
+        f.attrs["deck_sha256"] = run.deck_sha256
+        f.attrs["deck_text"] = run.deck_text
+        f.attrs["deck_source"] = run.deck_source
+        f.attrs["command_line"] = run.command_line
+        f.attrs["complete"] = run.complete
+        if run.incomplete_reason:
+            f.attrs["incomplete_reason"] = run.incomplete_reason
+        for name, (d, v) in entries.items():
+            _create(f, name, d, v)
+        _attach_scales(f, entries)
+        for group, attrs in group_attrs.items():
+            g = f.require_group(group)
+            for k, v in attrs.items():
+                g.attrs[k] = v
     return path

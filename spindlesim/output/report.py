@@ -27,10 +27,8 @@ import base64
 import datetime
 import html
 import logging
-import os
 import re
 import struct
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Iterable, Sequence
@@ -66,6 +64,7 @@ CAPTIONS: dict[str, str] = {
     "chatter_frf": "Tool-point FRF used for the stability lobes",
     "tools_frf": "Tool library: each tool's tip receptance on the spindle (receptance coupling)",
     "tools_lobes": "Tool library: each tool's stability lobes, minimum and recommended speed",
+    "calibration_frf": "Calibration: measured FRFs, the deck's model and the calibrated model",
     "chatter_stability_map": "Stability map",
     "contact_pressure": "Contact pressure on the raceway",
     "contact_roller": "Roller profile and contact",
@@ -181,26 +180,11 @@ class RunReport:
         """Write ``report.html`` into the output folder (temporary file, then rename); returns its path."""
         page = render(self)
         path = self.outdir / REPORT_NAME
-        _write_text_atomic(path, page)
+        from .hdf5 import write_text_atomic
+
+        write_text_atomic(path, page)
         log.info("wrote %s (%d kB)", path, len(page.encode()) // 1024)
         return path
-
-
-def _write_text_atomic(path: Path, text: str) -> Path:
-    """``text`` as UTF-8 to ``path`` through a temporary file renamed into place (hdf5.publish)."""
-    from .hdf5 import publish
-
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        publish(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-    return path
 
 
 # ----------------------------------------------------------------------------------------------

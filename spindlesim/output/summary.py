@@ -17,12 +17,12 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..registry import ANALYSIS_REGISTRY
+from ..registry import file_summaries
 from .labels import frequency_label, readable_keys
 from .numbers import with_resolution
 
 #: file stem (an analysis's name) -> "module:function" in spindlesim.output: the summary of that file
-SUMMARIES: dict[str, str] = {a.name: a.summary for a in ANALYSIS_REGISTRY if a.summary}
+SUMMARIES: dict[str, str] = file_summaries()
 
 
 def summary_of(stem: str) -> Callable | None:

@@ -14,13 +14,15 @@ _COLORS = ("tab:red", "tab:blue", "tab:green", "tab:purple")
 def _temperatures(ax, x, t, marker) -> None:
     for k, b in enumerate(t.bearings):
         c = _COLORS[k % len(_COLORS)]
-        ax.plot(x, t.inner_C[:, k], "-", color=c, marker=marker, ms=3, label=f"{b}: inner ring")
-        ax.plot(x, t.outer_C[:, k], "--", color=c, marker=marker, ms=3, label=f"{b}: outer ring")
+        # inner solid with filled markers, outer dashed, thinner, with open markers: apart in the legend too
+        ax.plot(x, t.inner_C[:, k], "-", color=c, lw=1.8, marker=marker, ms=4, label=f"{b}: inner ring")
+        ax.plot(x, t.outer_C[:, k], ls=(0, (4, 2)), color=c, lw=1.1, marker="s" if marker else None, ms=4,
+                mfc="white", label=f"{b}: outer ring")
     if t.motor_rotor_C is not None:
         ax.plot(x, t.motor_rotor_C, ":", color="0.2", label="motor rotor")
         ax.plot(x, t.motor_stator_C, "-.", color="0.5", label="motor stator")
     ax.set_ylabel("temperature [degC]")
-    ax.legend(fontsize=7, ncols=3, loc="upper left")
+    ax.legend(fontsize=7, ncols=3, loc="upper left", handlelength=3.0)
 
 
 def _has_drift(t) -> bool:
@@ -63,13 +65,18 @@ def speeds_figure(t, title: str = ""):
     _preload_and_drift(axes[1:], t.x, t, "o")
     axes[-1].set_xlabel("spindle speed [rpm]")
     if t.runaway_rpm is not None and np.isfinite(t.runaway_rpm):
+        # the limit the summary states (bisected), else the first speed of the list that ran away
+        at = t.limit_rpm[1] if t.limit_rpm is not None else t.runaway_rpm
+        text = (f"thermal speed limit: stable up to {t.limit_rpm[0]:.0f} rpm, runs away from {t.limit_rpm[1]:.0f} rpm"
+                if t.limit_rpm is not None else f"thermal runaway at {t.runaway_rpm:g} rpm")
         for ax in axes:
-            ax.axvline(t.runaway_rpm, color="tab:red", lw=1.5, ls="--")
-        axes[1].annotate(f"thermal runaway at {t.runaway_rpm:g} rpm", (t.runaway_rpm, 0.95),
-                         xycoords=("data", "axes fraction"), xytext=(-4, -10), textcoords="offset points",
-                         ha="right", fontsize=8, color="tab:red")
+            if t.limit_rpm is not None:
+                ax.axvspan(t.limit_rpm[1], max(t.runaway_rpm, t.limit_rpm[1]) * 1.03, color="tab:red", alpha=0.08)
+            ax.axvline(at, color="tab:red", lw=1.5, ls="--")
+        axes[1].annotate(text, (at, 0.95), xycoords=("data", "axes fraction"), xytext=(-4, -10),
+                         textcoords="offset points", ha="right", fontsize=8, color="tab:red")
         for ax in axes:
-            ax.set_xlim(right=max(t.runaway_rpm * 1.03, ax.get_xlim()[1]))
+            ax.set_xlim(right=max(max(t.runaway_rpm, at) * 1.03, ax.get_xlim()[1]))
     for ax in axes:
         ax.grid(True, alpha=0.3)
     fixed_layout(fig, left_in=1.0, right_in=0.8 if _has_drift(t) else 0.25, top_in=0.5, bottom_in=0.55,

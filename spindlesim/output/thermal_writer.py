@@ -55,10 +55,11 @@ class ThermalTable:
     runaway_rpm: float | None = None
     min_depth_m: np.ndarray | None = None  # warm-up with a chatter section: the minimum stable depth
     radial_m: np.ndarray | None = None  # [x, 2] the tool tip's radial drift x, y
+    limit_rpm: tuple[float, float] | None = None  # the speed limit (highest stable, lowest running away)
 
 
 def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: bool = False,
-             min_depth_m=None) -> ThermalTable:
+             min_depth_m=None, limit_rpm=None) -> ThermalTable:
     x = np.array([s.time_s if in_time else s.speed_rpm for s in states], float)
     motor = "motor:rotor" in states[0].temperatures_C if states else False
     return ThermalTable(
@@ -71,7 +72,8 @@ def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: boo
         np.array([s.temperatures_C["motor:stator"] for s in states]) if motor else None,
         np.array([np.nan if s.tool_tip_axial_drift_m is None else s.tool_tip_axial_drift_m for s in states], float),
         None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm,
-        None if min_depth_m is None else np.asarray(min_depth_m, float), _radial(states))
+        None if min_depth_m is None else np.asarray(min_depth_m, float), _radial(states),
+        None if limit_rpm is None else (float(limit_rpm[0]), float(limit_rpm[1])))
 
 
 _THRUST = "axial load each row carries (its operating preload; NaN: a bearing without rows' thrust)"

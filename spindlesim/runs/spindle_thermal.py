@@ -98,7 +98,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         run_info = dataclasses.replace(run_info, complete=False, incomplete_reason="; ".join(missing))
     paths = [write_spindle_thermal(outdir / "thermal.h5", run_info, model, series, warm)]
     if states:
-        table = tabulate(states, model.bearings, runaway_rpm=runaway[0] if runaway else None)
+        table = tabulate(states, model.bearings, runaway_rpm=runaway[0] if runaway else None, limit_rpm=limit)
         paths.append(draw(outdir / "thermal_speeds.png", speeds_figure, table, d.title))
     if warm is not None:
         table = tabulate(warm.states, model.bearings, frequency_hz=warm.frequency_hz, in_time=True,

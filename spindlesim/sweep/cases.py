@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 import yaml
 
+from ..deck.paths import list_index, set_path  # noqa: F401  (sweep's paths are the deck's)
 from ..deck.yamlmarks import DeckLoader
 
 
@@ -86,42 +87,6 @@ def parse_set_option(option: str) -> tuple[str, list[Any]]:
     if not path.strip() or not vals:
         raise ValueError(f"--set {option!r}: empty path or no values")
     return path.strip(), vals
-
-
-def set_path(data: Any, path: str, value: Any) -> None:
-    """Set ``value`` at dotted ``path`` in the YAML data (in place); raise KeyError naming the bad part."""
-    parts = path.split(".")
-    cur = data
-    for i, part in enumerate(parts):
-        last = i == len(parts) - 1
-        where = ".".join(parts[: i + 1])
-        if isinstance(cur, dict):
-            if last:
-                cur[part] = value
-                return
-            if part not in cur:
-                raise KeyError(f"{where}: no such key in the deck")
-            cur = cur[part]
-        elif isinstance(cur, list):
-            idx = _list_index(cur, part, where)
-            if last:
-                cur[idx] = value
-                return
-            cur = cur[idx]
-        else:
-            raise KeyError(f"{where}: cannot descend into a {type(cur).__name__}")
-
-
-def _list_index(items: list, part: str, where: str) -> int:
-    if part.lstrip("-").isdigit():
-        idx = int(part)
-        if not -len(items) <= idx < len(items):
-            raise KeyError(f"{where}: index out of range (list has {len(items)} items)")
-        return idx
-    named = [i for i, it in enumerate(items) if isinstance(it, dict) and it.get("name") == part]
-    if not named:
-        raise KeyError(f"{where}: no item named {part!r}")
-    return named[0]
 
 
 def build_cases(deck_text: str, parameters: dict[str, list[Any]], analysis: str, mode: str = "grid",
