@@ -17,24 +17,6 @@ from .hdf5 import Data, RunInfo, labels, write_h5
 
 
 @dataclass(frozen=True)
-class SpeedSeries:
-    """Thermal equilibria at ascending speeds, and the runaway that ended the list ((rpm, message) or None)."""
-
-    states: tuple
-    runaway: tuple[float, str] | None = None
-    limit_rpm: tuple[float, float] | None = None  # (highest stable, lowest running away) found by bisection
-
-
-@dataclass(frozen=True)
-class WarmUpSeries:
-    """The spindle at the instants of a warm-up, and the rotor's first natural frequencies then [time, mode]."""
-
-    states: tuple
-    frequency_hz: np.ndarray
-    minimum_depth: object | None = None  # analysis.warm_up_chatter.MinimumDepth, with a chatter section
-
-
-@dataclass(frozen=True)
 class ThermalTable:
     """What the figures draw, as plain arrays (sent to the figure process): along ``x`` (speeds [rpm] or
     times [s]), per bearing its rings' temperatures [degC] and its largest row thrust [N], the motor's,
@@ -155,8 +137,10 @@ def _common(g: str, states, bearings, nodes, sources, boundaries, axis: str) -> 
     return data
 
 
-def write_spindle_thermal(path: Path, run: RunInfo, model, series: SpeedSeries, warm: WarmUpSeries | None) -> Path:
+def write_spindle_thermal(path: Path, run: RunInfo, model, study) -> Path:
+    """``study``: an :class:`~spindlesim.analysis.thermal_study.ThermalStudy` of ``model``."""
     g = "/spindle_thermal"
+    series, warm = study, study.warm_up
     all_states = tuple(series.states) + (tuple(warm.states) if warm is not None else ())
     first = all_states[0] if all_states else None
     nodes = tuple(first.temperatures_C) if first is not None else ()

@@ -68,19 +68,27 @@ def run_campbell(loaded, outdir, run, opts, progress):
     res = solve_campbell(points, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")),
                          orders=orders, operating=operating)
     frozen_rpm = d.campbell.compare_frozen_rpm
-    frozen = None
-    if frozen_rpm is not None and not res.interrupted:  # the same assembly, states and basis
-        frozen = solve_campbell(points, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
-                                operating=operating, exact=bool(opts.get("exact")))
-    cold = stiffness = None
-    if points.thermal is not None and len(res.speed_rpm) and not res.interrupted:
-        # the bearings as assembled at the same speeds: what the temperatures change
-        from ..analysis.points import OperatingPoints
+    frozen = cold = stiffness = None
+    try:  # the comparisons: a Ctrl-C in them keeps the diagram solved, marked interrupted
+        if frozen_rpm is not None and not res.interrupted:  # the same assembly, states and basis
+            frozen = solve_campbell(points, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
+                                    operating=operating, exact=bool(opts.get("exact")))
+        if points.thermal is not None and len(res.speed_rpm) and not res.interrupted:
+            # the bearings as assembled at the same speeds: what the temperatures change
+            from ..analysis.points import OperatingPoints
 
-        cold_points = OperatingPoints(points.rotor)
-        cold = solve_campbell(cold_points, res.speed_rpm, n_modes=modes, orders=orders, operating=operating,
-                              exact=bool(opts.get("exact")))
-        stiffness = bearing_stiffness(points, cold_points, res.speed_rpm)
+            cold_points = OperatingPoints(points.rotor)
+            cold = solve_campbell(cold_points, res.speed_rpm, n_modes=modes, orders=orders, operating=operating,
+                                  exact=bool(opts.get("exact")))
+            if cold.interrupted:
+                raise KeyboardInterrupt
+            stiffness = bearing_stiffness(points, cold_points, res.speed_rpm)
+    except KeyboardInterrupt:
+        frozen = frozen if frozen is not None and not frozen.interrupted else None
+        cold = stiffness = None
+        res = dataclasses.replace(res, interrupted=True, incomplete_reason=(
+            "interrupted by the user in the comparison diagrams (frozen bearings, cold spindle): the diagram "
+            "itself is complete, the comparisons not written"))
     if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
         run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
     paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm, cold, stiffness,
