@@ -29,7 +29,12 @@ class LazyGroup(click.Group):
         if name not in COMMANDS:
             return None
         module = importlib.import_module(f"spindlesim.commands.{name}")
-        return module.command
+        cmd = module.command
+        if not any(p.name == "strict_here" for p in cmd.params):  # `--strict` after the command too
+            cmd.params.append(click.Option(["--strict", "strict_here"], is_flag=True, expose_value=False,
+                                           callback=_strict, help="Treat deck plausibility warnings (likely unit "
+                                                                  "mistakes) as errors (exit 2)."))
+        return cmd
 
     def invoke(self, ctx):
         """Run the subcommand; a Ctrl-C anywhere in it (its imports and deck loading included, before the
@@ -62,6 +67,11 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
     # Rotor matrices are small (~100-500 DOF): threaded BLAS only adds overhead (docs/decisions.md).
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ.setdefault(var, "1")
+
+
+def _strict(ctx: click.Context, _param, value: bool) -> None:
+    if value:
+        ctx.meta["spindlesim.strict"] = True  # meta is shared by the group's and the command's contexts
 
 
 class _Formatter(logging.Formatter):

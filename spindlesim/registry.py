@@ -143,7 +143,7 @@ TOOL_COMMANDS: tuple[Command, ...] = (
     Command("run", "Every analysis the deck lists, or every one it has the sections for (run --help).", "spindle"),
     Command("decks", "The embedded decks (defaults and examples); `decks show NAME` prints one to start from."),
     Command("schema", "The deck's JSON schema (editor completion and checking)."),
-    Command("sweep", "Parameter study over any deck value (process pool or Dask), resumable.", "spindle"),
+    Command("sweep", "Parameter study over any deck value (process pool or Dask), resumable.", "speed_study"),
     Command("calibrate", "Fit deck values (joints, bearing damping ...) to measured FRFs: calibrated deck, 95 % "
                          "intervals.", "tool_library", summary="calibration_summary:calibration", file="calibration"),
 )

@@ -28,6 +28,7 @@ class StaticResult:
     tool_tip_node: int | None = None  # 0-based, when the deck has a tool
     tool_tip_stiffness_N_m: dict | None = None  # {"x", "y"[, "z"]}: 1 / direct compliance at the tip
     gravity_m_s2: float = 0.0  # gravity in the applied loads (along -y); 0: off
+    damping_only: tuple[str, ...] = ()  # bearings with no stiffness at the state (a damper): no static reaction
 
 
 @dataclass(frozen=True)

@@ -50,6 +50,8 @@ def solve_static(rotor: "Rotor | OperatingPoints", stiffness_node: int = 0, stif
         bearing_force_N=forces, applied_force_N=applied, stiffness_node=stiffness_node,
         stiffness_dof=stiffness_dof, static_stiffness_N_m=float(1.0 / compliance),
         speed_rpm=st.speed_rad_s * 30 / np.pi, state=st,
+        damping_only=tuple(b.name for b, (kb, _) in zip(rotor.bearings, st.coefficients)
+                           if kb is not None and not np.any(kb)),
         axial_displacement_m=_component(rotor, q, "z") if rotor.dofs.has("z") else None,
         applied_axial_force_N=float(axial), tool_tip_node=tip, tool_tip_stiffness_N_m=tip_k,
         gravity_m_s2=float(rotor.gravity_m_s2),

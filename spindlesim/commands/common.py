@@ -73,7 +73,23 @@ def report_deck_error(exc, note: str = "") -> None:
     if total > len(exc.issues):
         click.echo(f"... and {total - len(exc.issues)} more", err=True)
     click.echo(f"spindlesim: {total} error(s) in the deck{note}; nothing was written.", err=True)
+    remove_empty_outdirs()
     sys.exit(EXIT_DECK_ERROR)
+
+
+#: output folders this command made (innermost last): removed again if it ends with nothing written in them
+_MADE: list[Path] = []
+
+
+def remove_empty_outdirs() -> None:
+    """The folders this command made that are still empty (a deck error, a failure, a Ctrl-C before any file),
+    innermost first: no empty output folder is left behind."""
+    for p in reversed(_MADE):
+        try:
+            p.rmdir()  # only an empty folder goes
+        except OSError:
+            break
+    _MADE.clear()
 
 
 def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
@@ -84,7 +100,9 @@ def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
 
     out = outdir if outdir is not None else Path("out") / loaded.stem / sub
     try:
+        made = [p for p in (out, *out.parents) if not p.exists()]
         out.mkdir(parents=True, exist_ok=True)
+        _MADE.extend(reversed(made))
         with tempfile.TemporaryFile(dir=out):
             pass
     except OSError as exc:
@@ -212,6 +230,7 @@ def run_command(name: str, loaded, call: Callable[[], list], close: Callable[[],
         close()
         code = exit_code_of(exc)
         click.echo(f"spindlesim {name}: interrupted (exit code {code})", err=True)
+        remove_empty_outdirs()
         sys.exit(code)
     # --- end run status ---
     except (ValueError, ArithmeticError, RuntimeError) as exc:  # numpy's LinAlgError is a ValueError
@@ -231,4 +250,5 @@ def fail(message: str, code: int) -> None:
     if ctx is not None and ctx.meta.get("spindlesim.report") == "json":
         click.echo(json.dumps({"error": message, "exit_code": code}))
     click.echo(message, err=True)
+    remove_empty_outdirs()
     sys.exit(code)

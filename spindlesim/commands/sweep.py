@@ -40,7 +40,9 @@ def command(deck, outdir, analysis, sets, mode, workers, scheduler, case_plots):
     from .exits import EXIT_DECK_ERROR, outcome_code
     from .common import report_deck_error
 
-    loaded = load_or_default(deck, "spindle")
+    from ..decks import DEFAULT_DECKS
+
+    loaded = load_or_default(deck, DEFAULT_DECKS["sweep"])
     sw = loaded.deck.sweep
     try:
         params = study_parameters(sw, sets)

@@ -19,6 +19,11 @@ def _per_bearing(f, group: str, fields: list[tuple[str, str, float, str]]):
     return lines, data
 
 
+def _deg(x: float) -> str:
+    """An angle to 0.1 deg, never "-0.0"."""
+    return f"{round(float(x), 1) + 0.0:.1f}"
+
+
 def thermal(f):
     if "spindle_thermal" in f:
         return _spindle_thermal(f)
@@ -147,8 +152,8 @@ def bearing(f):
     Qi, Qo, p = g["element_load_inner_N"][()], g["element_load_N"][()], g["max_pressure_Pa"][()]
     ai, ao = g["contact_angle_inner_deg"][()], g["contact_angle_outer_deg"][()]
     lines.append(f"  largest contact loads {Qi.max():.4g} N inner, {Qo.max():.4g} N outer; contact pressure "
-                 f"{p.max() * 1e-9:.3g} GPa; contact angles {ai.min():.1f}-{ai.max():.1f} deg inner, "
-                 f"{ao.min():.1f}-{ao.max():.1f} deg outer")
+                 f"{p.max() * 1e-9:.3g} GPa; contact angles {_deg(ai.min())}-{_deg(ai.max())} deg inner, "
+                 f"{_deg(ao.min())}-{_deg(ao.max())} deg outer")
     data.update({"stiffness_diagonal": np.diag(K).tolist(), "max_element_load_N": float(Qo.max()),
                  "max_element_load_inner_N": float(Qi.max()), "max_pressure_Pa": float(p.max())})
     c, used, model = g["race_control_criterion"][()], g["race_control_used"][()], str(a.get("model", ""))

@@ -55,8 +55,13 @@ def static(f):
     data["bearing_force_N"] = {n: fb.tolist() for n, fb in zip(names, forces)}
     shown = clean(forces, max(float(np.max(np.abs(forces), initial=0.0)), float(np.max(np.abs(F), initial=0.0)),
                               ABSOLUTE_N))
+    dampers = [n.strip() for n in str(a.get("damping_only", "")).split(",") if n.strip()]
     for n, fb in zip(names, shown):  # below the noise of the largest force: 0
+        if n in dampers:
+            continue
         lines.append(f"  bearing {n:12s} reaction " + ", ".join(f"{_g(v):>10s}" for v in np.ravel(fb)[:5]) + " N")
+    if dampers:
+        lines.append(f"  {', '.join(dampers)}: damping only (no stiffness, no static reaction)")
     return lines, data
 
 

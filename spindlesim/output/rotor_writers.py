@@ -46,6 +46,8 @@ def write_static(path: Path, run: RunInfo, r: StaticResult) -> Path:
                                                    "1 / direct static compliance at the tool tip")
         data.update(labels(g, "tip_dof", tuple(tip)))
         attrs["tool_tip_node"] = r.tool_tip_node + 1
+    if r.damping_only:
+        attrs["damping_only"] = ", ".join(r.damping_only)
     return write_h5(path, run, data, {g: attrs})
 
 
