@@ -55,10 +55,10 @@ class Sweep:
 class OperatingPoints:
     """The rotor at its operating points (module note).  Mutable only in its caches."""
 
-    def __init__(self, rotor: Rotor, thermal_model=None):
+    def __init__(self, rotor: Rotor, thermal_model=None, shaft: ShaftMatrices | None = None):
         self.rotor = rotor
-        self.shaft: ShaftMatrices = assemble_shaft(rotor)
-        self.assemblies = 1
+        self.shaft: ShaftMatrices = assemble_shaft(rotor) if shaft is None else shaft  # shared: the same rotor's
+        self.assemblies = 1 if shaft is None else 0
         self.solves = 0
         self._states: dict[float, OperatingState] = {}
         self._bases: dict[tuple, object] = {}

@@ -73,9 +73,11 @@ class ThermalStudy:
 
 def thermal_study(points, speeds_rpm: Sequence[float], warm_up=None,
                   depth_through: Callable | None = None,
-                  progress: Callable[[int, int], None] | None = None) -> ThermalStudy:
+                  progress: Callable[[int, int], None] | None = None, quiet: bool = False) -> ThermalStudy:
     """The module note's study on ``points`` (operating points with a steady thermal model); ``warm_up`` the
-    model's ``WarmUpSpec`` (or None), ``depth_through(points, instants)`` the minimum stable depth through it."""
+    model's ``WarmUpSpec`` (or None), ``depth_through(points, instants)`` the minimum stable depth through it;
+    ``quiet``: the runaway that ends the list is logged as information, not as a warning (another analysis
+    asking for the speed limit)."""
     thermal = points.thermal
     speeds = list(speeds_rpm)
     total = len(speeds) + (1 if warm_up is not None else 0)
@@ -90,7 +92,7 @@ def thermal_study(points, speeds_rpm: Sequence[float], warm_up=None,
                 states.append(points.thermal_state(rpm))
             except ThermalRunawayError as exc:
                 runaway = (rpm, str(exc))
-                log.warning("%s", exc)
+                log.log(logging.INFO if quiet else logging.WARNING, "%s", exc)
                 break
             if progress is not None:
                 progress(k + 1, total)

@@ -61,11 +61,27 @@ class ChatterResult:
     simulations: tuple[SimulationResult, ...]
     pockets: tuple[Pocket, ...] = ()
     tool: ToolSource | None = None
+    #: the spindle's thermal speed limit [rpm]: speeds above it are never recommended nor the minimum's
+    speed_limit_rpm: float | None = None
 
     @property
     def recommendation(self) -> Pocket | None:
-        """The pocket to cut in (:func:`~spindlesim.chatter.pockets.best_pocket`), if any."""
-        return best_pocket(self.pockets)
+        """The pocket to cut in (:func:`~spindlesim.chatter.pockets.best_pocket`) among those the spindle can run
+        (the whole pocket at or below the speed limit), if any."""
+        lim = self.speed_limit_rpm
+        return best_pocket(tuple(p for p in self.pockets if lim is None or p.speed_max_rpm <= lim))
+
+    @property
+    def minimum(self) -> tuple[float, float] | None:
+        """(speed [rpm], depth [m]) of the smallest limit depth at the speeds the spindle can run (all without a
+        speed limit); None where no limit was found there."""
+        dg = self.diagram
+        keep = np.ones(len(dg.speed_rpm), bool) if self.speed_limit_rpm is None else \
+            np.asarray(dg.speed_rpm, float) <= self.speed_limit_rpm
+        if not np.any(np.isfinite(np.asarray(dg.limit_depth_m, float)[keep])):
+            return None
+        return replace(dg, speed_rpm=np.asarray(dg.speed_rpm)[keep],
+                       limit_depth_m=np.asarray(dg.limit_depth_m)[keep]).minimum
 
 
 def _tool_at(tool: ToolSource, speeds: np.ndarray, speed: float) -> Tool:
@@ -78,7 +94,8 @@ def _tool_at(tool: ToolSource, speeds: np.ndarray, speed: float) -> Tool:
 
 def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
                 simulation_tool: ToolSource | None = None,
-                tools_at: Callable[[np.ndarray], list] | None = None) -> ChatterResult:
+                tools_at: Callable[[np.ndarray], list] | None = None,
+                speed_limit_rpm: float | None = None) -> ChatterResult:
     """Lobe diagram and the requested time-domain checks of a built ``chatter:`` section.
 
     ``tool`` replaces ``spec.tool`` (needed when the deck says ``frf: rotor``);
@@ -86,7 +103,8 @@ def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
     semi-discretization reduces a large model itself, checked on the zero-order lobes).
     ``tools_at(speeds)`` gives one tool per speed at speeds off the grid, for the pockets the grid does
     not resolve (:mod:`~spindlesim.chatter.refine`); a tool that is the same at every speed, or a
-    callable one, needs none, and a list without it is not refined.
+    callable one, needs none, and a list without it is not refined.  ``speed_limit_rpm``: the spindle's thermal
+    speed limit (the recommendation and the minimum stay below it).
     """
     src = tool if tool is not None else spec.tool
     if src is None:
@@ -116,4 +134,4 @@ def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
         merged = [by_speed[float(s)] for s in diagram.speed_rpm]
     sims = tuple(simulate(spec.process, _tool_at(timed, spec.speeds_rpm, s), s, a, **dict(spec.simulation_options))
                  for s, a in spec.simulation_points)
-    return ChatterResult(diagram, sims, stability_pockets(diagram), merged)
+    return ChatterResult(diagram, sims, stability_pockets(diagram), merged, speed_limit_rpm)

@@ -6,10 +6,11 @@ from __future__ import annotations
 import numpy as np
 
 from ..analysis.results import CampbellResult
-from .figures import fixed_layout, new_figure
+from .figures import shade_above_speed_limit, fixed_layout, new_figure
 
 
-def campbell_figure(r: CampbellResult, operating_rpm: float | None = None, teeth: int | None = None):
+def campbell_figure(r: CampbellResult, operating_rpm: float | None = None, teeth: int | None = None,
+                    speed_limit_rpm: float | None = None):
     """Tracked modes (one colour per mode in both panels; marker = whirl), the 0.5x line and the
     excitation orders of the crossings (1x, 2x, a cutter's tooth passing), every crossing marked
     (a star where it is an API 684 critical speed, AF >= 2.5, labelled on the 1x line), speeds with an
@@ -77,6 +78,8 @@ def campbell_figure(r: CampbellResult, operating_rpm: float | None = None, teeth
     ax1.set_ylabel("damped natural frequency [Hz]")
     ax1.set_ylim(0, top)
     ax1.set_xlim(s[0], s[-1])
+    if speed_limit_rpm is not None:
+        shade_above_speed_limit([ax1, ax2], speed_limit_rpm, short=True)
     w = fig.get_size_inches()[0]
     fixed_layout(fig, right_in=1.4, gap_in=0.3)
     fig.legend(*ax1.get_legend_handles_labels(), loc="upper left", bbox_to_anchor=(1 - 1.35 / w, ax1.get_position().y1),

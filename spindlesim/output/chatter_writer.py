@@ -93,6 +93,11 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
             f"{g}/grid_speeds": (np.array([p.grid_speeds for p in pk]), "1", d),
             f"{g}/capped": (np.array([p.capped for p in pk], np.int8), "1", d)}
     r = result.recommendation
+    if r is None:  # every pocket runs above the spindle's thermal speed limit
+        return data, {"recommendation": f"none: no stability pocket at or below the thermal speed limit "
+                                        f"({result.speed_limit_rpm:,.0f} rpm)"}
+    below = ("" if result.speed_limit_rpm is None else
+             f"; only pockets at or below the thermal speed limit ({result.speed_limit_rpm:,.0f} rpm)")
     attrs = {"recommended_speed_rpm": r.speed_rpm, "recommended_depth_m": r.depth_m,
              "recommended_speed_tolerance_rpm": r.tolerance_rpm, "pocket_speed_min_rpm": r.speed_min_rpm,
              "pocket_speed_max_rpm": r.speed_max_rpm, "pocket_peak_depth_m": r.peak_depth_m,
@@ -101,7 +106,7 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
              "recommendation": (f"the middle of the deepest stability pocket resolved by at least {MIN_GRID_SPEEDS} "
                                 f"grid speeds (else the deepest); over the speed interval the limit stays at or above "
                                 f"the depth, {POCKET_LEVEL:.0%} of the pocket's peak or less where needed for the "
-                                f"interval to span +-{MIN_TOLERANCE:.0%} of the speed")}
+                                f"interval to span +-{MIN_TOLERANCE:.0%} of the speed{below}")}
     return data, attrs
 
 
@@ -146,9 +151,11 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
     for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
         if key in info:
             attrs["/chatter"][{"node": "tool_point_node"}.get(key, key)] = info[key]
-    if np.any(np.isfinite(dg.limit_depth_m)):
-        s_min, a_min = dg.minimum
+    if result.minimum is not None:
+        s_min, a_min = result.minimum
         attrs["/chatter"].update(minimum_limit_depth_m=a_min, minimum_at_speed_rpm=s_min)
+    if result.speed_limit_rpm is not None:
+        attrs["/chatter"]["thermal_speed_limit_rpm"] = float(result.speed_limit_rpm)
     if at_deck is not None:
         attrs["/chatter/at_deck_speed"] = {"method": at_deck.method, "method_selection": at_deck.selection}
     attrs["/chatter/frf"] = {"layout": "[frequency, output (x, y), input (x, y)]"}

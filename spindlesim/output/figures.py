@@ -58,3 +58,15 @@ def save_figure(fig: Figure, path: str | Path, dpi: int = 110) -> Path:
         # zlib level 3 instead of PIL's 6: a third less time for files about 10 % larger
         fig.savefig(tmp, dpi=dpi, format="png", pil_kwargs={"compress_level": 3})
     return path
+
+
+def shade_above_speed_limit(axes, limit_rpm: float, label: bool = True, short: bool = False) -> None:
+    """Shade the speeds above the spindle's thermal speed limit on axes whose x is the speed [rpm] (the first
+    axis gets the legend entry; ``short``: for a narrow legend)."""
+    text = f"> {limit_rpm:,.0f} rpm:\nthermal limit" if short else \
+        f"above the thermal speed limit ({limit_rpm:,.0f} rpm)"
+    for k, ax in enumerate(axes):
+        lo, hi = ax.get_xlim()
+        if hi > limit_rpm:
+            ax.axvspan(limit_rpm, hi, color="tab:red", alpha=0.10, lw=0, label=text if label and k == 0 else None)
+            ax.set_xlim(lo, hi)

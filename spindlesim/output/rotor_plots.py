@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..analysis.results import FrfResult, ModalResult, StaticResult, UnbalanceResult
-from .figures import fixed_layout, new_figure
+from .figures import shade_above_speed_limit, fixed_layout, new_figure
 from .numbers import g
 
 
@@ -135,8 +135,9 @@ def frf_real_imag_figure(r: FrfResult):
     return fixed_layout(fig)
 
 
-def unbalance_figure(r: UnbalanceResult):
-    """0-peak amplitude (log) and phase at the output DOF over speed; the 1x crossings marked."""
+def unbalance_figure(r: UnbalanceResult, speed_limit_rpm: float | None = None):
+    """0-peak amplitude (log) and phase at the output DOF over speed; the 1x crossings marked; the speeds above the
+    spindle's thermal speed limit shaded."""
     fig = new_figure(8, 6)
     a1, a2 = fig.subplots(2, 1, sharex=True)
     node = r.output_node - 1
@@ -159,4 +160,8 @@ def unbalance_figure(r: UnbalanceResult):
     a2.set_ylabel("phase [deg]")
     a2.set_xlabel("speed [rpm]")
     a2.grid(True, alpha=0.3)
+    if speed_limit_rpm is not None:
+        a1.set_xlim(r.speed_rpm[0], r.speed_rpm[-1])
+        shade_above_speed_limit([a1, a2], speed_limit_rpm)
+        a1.legend(fontsize=8, loc="upper left")
     return fig

@@ -149,9 +149,14 @@ def chatter(f):
         counts = {m: used.count(m) for m in dict.fromkeys(used)}
         if len(counts) > 1:
             lines.append("  limits from " + ", ".join(f"{m.replace('_', ' ')} at {k} speed(s)" for m, k in counts.items()))
+    below = ""
+    if "thermal_speed_limit_rpm" in a:
+        lim = float(a["thermal_speed_limit_rpm"])
+        below = f" (up to the thermal speed limit, {lim:,.0f} rpm)"
+        data["thermal_speed_limit_rpm"] = lim
     if "minimum_limit_depth_m" in a:
         d, s = float(a["minimum_limit_depth_m"]), float(a["minimum_at_speed_rpm"])
-        lines.append(f"  minimum limit depth {d * 1e3:.3g} mm at {s:,.0f} rpm")
+        lines.append(f"  minimum limit depth {d * 1e3:.3g} mm at {s:,.0f} rpm{below}")
         data.update(minimum_limit_depth_m=d, minimum_at_speed_rpm=s)
     if int(a.get("capped_speeds", 0)):
         lines.append(f"  {int(a['capped_speeds'])} speed(s) stable up to the depth cap "

@@ -54,7 +54,11 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     sim_tool = for_simulation(tool) if points else None
     spec = ChatterSpec(spec.process, spec.speeds_rpm, spec.method, spec.frf_source, spec.tool,
                        spec.frf_at_each_speed, spec.method_options, points, spec.simulation_options)
-    result = run_chatter(spec, tool, simulation_tool=sim_tool, tools_at=tools_at)
+    from .common import thermal_speed_limit
+
+    limit = thermal_speed_limit(loaded)
+    result = run_chatter(spec, tool, simulation_tool=sim_tool, tools_at=tools_at,
+                         speed_limit_rpm=None if limit is None else limit[0])
     at_deck = None
     if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed
         at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
@@ -101,7 +105,7 @@ def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> li
     paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, tool, deck_tool, info)]
     dg = result.diagram
     paths.append(draw(outdir / "chatter_lobes.png", lobes_figure, dg, result.simulations, at_deck,
-                      info.get("deck_speed_rpm"), result.recommendation))
+                      info.get("deck_speed_rpm"), result.recommendation, result.speed_limit_rpm))
     shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
     if shown is not None:
         paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
@@ -112,11 +116,15 @@ def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> li
     return paths
 
 
-def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None, recommendation=None):
-    """The lobe diagram; with ``at_deck`` (the lobes from the FRF at the deck speed) drawn over it, dashed."""
+def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None, recommendation=None, speed_limit_rpm=None):
+    """The lobe diagram; with ``at_deck`` (the lobes from the FRF at the deck speed) drawn over it, dashed; the
+    speeds above the spindle's thermal speed limit shaded."""
     from ..chatter.plots import lobe_diagram_figure
+    from ..output.figures import shade_above_speed_limit
 
     fig = lobe_diagram_figure(diagram, simulations=simulations, recommendation=recommendation)
+    if speed_limit_rpm is not None:
+        shade_above_speed_limit(fig.axes, speed_limit_rpm)
     if at_deck is not None:
         ax = fig.axes[0]
         ax.plot(at_deck.speed_rpm, 1e3 * at_deck.limit_depth_m, color="0.35", lw=1.1, ls="--",

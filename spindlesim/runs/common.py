@@ -43,3 +43,41 @@ def operating_points(loaded):
         got = (loaded, OperatingPoints(rotor, thermal))
         _POINTS[id(loaded)] = got
     return got[1]
+
+
+_LIMITS: dict[int, tuple] = {}
+
+
+def thermal_speed_limit(loaded) -> tuple[float, float] | None:
+    """The spindle's thermal speed limit (highest speed found stable, lowest running away) [rpm] when the deck has
+    a ``spindle_thermal`` section and a speed of its list runs away; None otherwise.  Solved once per deck (the
+    equilibria from the lowest speed of ``spindle_thermal.speeds_rpm`` up, bisected to 2 %: the ``thermal``
+    command's number), for the analyses that shade the speeds above it and never recommend them."""
+    d = loaded.deck
+    if getattr(d, "spindle_thermal", None) is None:
+        return None
+    got = _LIMITS.get(id(loaded))
+    if got is None or got[0] is not loaded:
+        import dataclasses
+
+        from ..analysis.points import OperatingPoints
+        from ..analysis.thermal_study import thermal_study
+        from ..model.thermal import build_spindle_thermal
+
+        points = operating_points(loaded)
+        model = build_spindle_thermal(d, points.rotor)
+        steady = OperatingPoints(points.rotor, dataclasses.replace(model, analyses="steady"), shaft=points.shaft)
+        speeds = sorted(model.speeds_rpm) or [float(d.operating.speed_rpm)]
+        study = thermal_study(steady, speeds, quiet=True)
+        if study.interrupted:
+            raise KeyboardInterrupt
+        remember_thermal_speed_limit(loaded, study.limit_rpm)
+        got = _LIMITS[id(loaded)]
+    return got[1]
+
+
+def remember_thermal_speed_limit(loaded, limit: tuple[float, float] | None) -> None:
+    """The ``thermal`` run's speed limit (the same equilibria :func:`thermal_speed_limit` solves), kept for the
+    analyses of the same run that shade the speeds above it."""
+    _LIMITS.clear()
+    _LIMITS[id(loaded)] = (loaded, limit)

@@ -95,7 +95,7 @@ def run_campbell(loaded, outdir, run, opts, progress):
                             operating_rpm=d.operating.speed_rpm)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None,
-                          teeth=cutter_teeth(d)))
+                          teeth=cutter_teeth(d), speed_limit_rpm=_limit(loaded)))
         if frozen is not None:
             paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, frozen, frozen_rpm))
         if cold is not None:
@@ -110,6 +110,14 @@ def run_campbell(loaded, outdir, run, opts, progress):
 
         raise IncompleteRun(res.incomplete_reason, paths, interrupted=res.interrupted)
     return paths
+
+
+def _limit(loaded) -> float | None:
+    """The highest speed the spindle runs at its thermal equilibrium (its thermal speed limit), or None."""
+    from .common import thermal_speed_limit
+
+    lim = thermal_speed_limit(loaded)
+    return None if lim is None else lim[0]
 
 
 def bearing_stiffness(hot, cold, speeds) -> dict:
@@ -179,5 +187,5 @@ def run_unbalance(loaded, outdir, run, opts, progress):
                           u.output.node, u.output.dof, refine=True, operating=d.operating.speed_range_rpm)
     paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
     if plots_wanted(opts):
-        paths.append(draw(outdir / "unbalance.png", unbalance_figure, res))
+        paths.append(draw(outdir / "unbalance.png", unbalance_figure, res, speed_limit_rpm=_limit(loaded)))
     return paths

@@ -42,6 +42,10 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     speeds = [float(opts["speed_rpm"])] if opts.get("speed_rpm") is not None else \
         sorted(model.speeds_rpm) or [float(d.operating.speed_rpm)]
     res = thermal_study(points, speeds, model.warm_up, _depth_through(loaded), progress)
+    if opts.get("speed_rpm") is None and not res.interrupted:  # the deck's speeds: the limit the others shade
+        from .common import remember_thermal_speed_limit
+
+        remember_thermal_speed_limit(loaded, res.limit_rpm)
     for m in res.missing:
         log.warning("%s", m)
     why = "; ".join(([res.interrupted] if res.interrupted else []) + list(res.missing))
