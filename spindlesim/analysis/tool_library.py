@@ -128,18 +128,19 @@ class ToolLobes:
     method: str
 
 
-def tool_lobes(name: str, points, spec, speed_rpm: float) -> ToolLobes:
+def tool_lobes(name: str, points, spec, speed_rpm: float, speed_limit_rpm: float | None = None) -> ToolLobes:
     """The lobes of ``spec`` (a built ``chatter:`` section, its time-domain checks left out) for the tool-point
     model of the operating points ``points`` (the rotor with that tool) at ``speed_rpm``, the same at every
-    speed of the diagram."""
+    speed of the diagram; the minimum and the recommendation at or below ``speed_limit_rpm`` (the spindle's
+    thermal speed limit)."""
     from ..chatter import run_chatter
     from .tool_point import tool_point_model
 
     model = tool_point_model(points, speed_rpm)
     spec = dataclasses.replace(spec, simulation_points=())
-    res = run_chatter(spec, model)
+    res = run_chatter(spec, model, speed_limit_rpm=speed_limit_rpm)
     dg = res.diagram
-    s_min, d_min = dg.minimum
+    s_min, d_min = res.minimum if res.minimum is not None else (float("nan"), float("nan"))
     rec = res.recommendation
     return ToolLobes(name, np.asarray(dg.speed_rpm, float), np.asarray(dg.limit_depth_m, float), s_min, d_min,
                      rec.speed_rpm if rec is not None else float("nan"),

@@ -58,13 +58,17 @@ def study(loaded: Any, options: dict | None = None, progress=None):
     if with_lobes:
         from ..chatter import build_chatter
 
-        base = Path(loaded.source).parent if not loaded.source.startswith("<") else Path.cwd()
-        spec = build_chatter(d.chatter, base)
+        from ..deck import deck_folder
+        from .common import thermal_speed_limit
+
+        spec = build_chatter(d.chatter, deck_folder(loaded))
+        limit = thermal_speed_limit(loaded)
         for k, (name, section) in enumerate(tools):
             rotor = with_tool(d, section)
             thermal = build_spindle_thermal(d, rotor)
             thermal = thermal if thermal is not None and thermal.analyses != "none" else None
-            lobes.append(tool_lobes(name, OperatingPoints(rotor, thermal), spec, speed))
+            lobes.append(tool_lobes(name, OperatingPoints(rotor, thermal), spec, speed,
+                                    None if limit is None else limit[0]))
             tick(len(tools) + k + 1, steps)
     return ToolLibraryStudy(library, tuple(lobes))
 
