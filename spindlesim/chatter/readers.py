@@ -184,19 +184,19 @@ def _decay(path, lineno: int, text: str) -> float:
     return v
 
 
-def csv_rows(path, comments: list | None = None) -> Iterator[tuple[int, list[str]]]:
+def csv_rows(path, comments: list | None = None, error: type = FrfFileError) -> Iterator[tuple[int, list[str]]]:
     """(line number, fields) of every line of a CSV file that is neither blank nor a ``#`` comment; each
     ``# exponential_window_decay_1_s: D`` comment is appended to ``comments`` as (line, "D").  A file that
-    cannot be read raises :class:`FrfFileError`."""
+    cannot be read raises ``error`` (a :class:`FrfFileError`)."""
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8-sig")
     except FileNotFoundError:
-        raise FrfFileError(path, None, "no such file") from None
+        raise error(path, None, "no such file") from None
     except OSError as exc:
-        raise FrfFileError(path, None, f"cannot read: {exc.strerror or exc}") from exc
+        raise error(path, None, f"cannot read: {exc.strerror or exc}") from exc
     except UnicodeDecodeError as exc:
-        raise FrfFileError(path, None, "not a UTF-8 text file") from exc
+        raise error(path, None, "not a UTF-8 text file") from exc
     for lineno, line in enumerate(text.splitlines(), start=1):
         s = line.strip()
         if not s:
