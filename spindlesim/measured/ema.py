@@ -44,10 +44,11 @@ class LscfPoles:
 
 def lscf_poles(frequency_hz: np.ndarray, h: np.ndarray, band_hz: tuple[float, float], max_order: int) -> LscfPoles:
     """LSCF (least-squares complex frequency) poles of the receptance ``h`` [m/N] at ``frequency_hz`` (uniform,
-    on multiples of its step) for the orders 2, 4, ..., 2 ``max_order``, fitted over ``band_hz``.
+    on multiples of its step) for the orders 2, 4, ..., 2 ``max_order``, fitted from ``band_hz[0]`` to
+    ``band_hz[1]``.
 
-    The data above the band are not passed (the library's z-domain spans 0 to the last frequency given);
-    the data below it are left out of the fit by the library (its ``lower``)."""
+    The data above ``band_hz[1]`` are not passed (the library's z-domain spans 0 to the last frequency given, its
+    Nyquist frequency); the data below ``band_hz[0]`` are left out of the fit by the library (its ``lower``)."""
     EMA = _ema()
     f = np.asarray(frequency_hz, float)
     keep = f <= band_hz[1] * (1 + 1e-12)

@@ -1,7 +1,7 @@
 """Modal parameters from a measured FRF: ``identify_modes(frf) -> ModalIdentification``.
 
 Method (docs/theory.md, "Modal identification"): sdypy-EMA's LSCF estimator gives the poles of every model
-order 2, 4, ..., 2 ``max_order`` over the band; sdypy-EMA's LSFD gives each order's residues; the rule of
+order 2, 4, ..., 2 ``max_order``; sdypy-EMA's LSFD gives each order's residues over the band; the rule of
 :mod:`~spindlesim.measured.stabilisation` picks the stable poles (frequency, damping and residue stable
 through the orders); LSFD gives the chosen poles' residues with the upper and lower residuals.  Each mode
 is then put in the chatter section's modal form H = 1 / (k (1 - r^2 + 2 j zeta r)) with f_n = |lambda| /
@@ -16,6 +16,12 @@ An exponential window of the measurement (``frf.window_decay_1_s``, from the fil
 The FRF's coherence, where the file gives it, is reported at each mode, not used as a weight: LSCF and
 LSFD of sdypy-EMA fit every sample of the band alike.  LSCF needs equally spaced frequencies on multiples of
 their step; other samples are interpolated (linearly, real and imaginary parts) onto such a grid first.
+
+The band picks the modes reported, their residues (LSFD) and the fit errors.  LSCF is fitted from the band's low
+edge (with a coherence: from the coherent band's, when that is lower) to the end of the data: its discrete-time
+model takes the last frequency for its Nyquist frequency, and a band's upper edge inside the data is a
+discontinuity there, whose poles scatter through the band (docs/decisions.md: on the packaged tap test,
+LSCF cut at 2800 Hz found no mode of 1800-2800 Hz stable; to the file's end both).
 """
 
 from __future__ import annotations
@@ -73,14 +79,17 @@ def identify_modes(frf, band_hz: tuple[float, float] | None = None, *, direction
         coh = None if coherence is None else np.asarray(coherence)[:, i, i]
         if coh is not None and not np.any(np.isfinite(coh)):
             coh = None
-        band = band_hz
-        if band is None and coh is not None:
-            band = coherent_band(frf.frequency_hz, coh)
-            if band is None:
-                raise MeasurementInputError(f"direction {d}: the coherence never reaches {COHERENCE_LEVEL} (a running "
-                                          f"median over {COHERENCE_WINDOW} samples); give the band to fit (--band)")
-        out.append(_direction(np.asarray(frf.frequency_hz, float), h, coh, d, band, max_order, criteria,
-                              min_peak_share, float(decay[i]), band_hz is None and coh is not None))
+        f = np.asarray(frf.frequency_hz, float)
+        usable = _band(f, None, d) if coh is None else coherent_band(f, coh)
+        if usable is None:
+            raise MeasurementInputError(f"direction {d}: the coherence never reaches {COHERENCE_LEVEL} (a running median "
+                                        f"over {COHERENCE_WINDOW} samples): no usable band")
+        band = _band(f, usable if band_hz is None else band_hz, d)
+        notes = [f"band {band[0]:g}-{band[1]:g} Hz: where the coherence (running median over {COHERENCE_WINDOW} "
+                 f"samples) is at least {COHERENCE_LEVEL}"] if band_hz is None and coh is not None else []
+        # LSCF sees the usable data from the band's low edge (or lower, down to the usable band's) to their end
+        fit = (min(band[0], usable[0]) if coh is not None else band[0], max(band[1], _band(f, None, d)[1]))
+        out.append(_direction(f, h, coh, d, band, fit, max_order, criteria, min_peak_share, float(decay[i]), notes))
     return ModalIdentification(tuple(out), frf.source, criteria, max_order, min_peak_share,
                                f"sdypy-EMA {ema.ema_version()}")
 
@@ -89,13 +98,8 @@ def identify_modes(frf, band_hz: tuple[float, float] | None = None, *, direction
 # one direction
 
 
-def _direction(f, h, coh, d, band_hz, max_order, c, min_peak_share, decay, by_coherence) -> DirectionIdentification:
-    notes: list[str] = []
-    band = _band(f, band_hz, d)
-    if by_coherence:
-        notes.append(f"band {band[0]:g}-{band[1]:g} Hz: where the coherence (running median over {COHERENCE_WINDOW} "
-                     f"samples) is at least {COHERENCE_LEVEL}")
-    f, h, coh, note = uniform_grid(f, h, coh, band)
+def _direction(f, h, coh, d, band, fit_hz, max_order, c, min_peak_share, decay, notes) -> DirectionIdentification:
+    f, h, coh, note = uniform_grid(f, h, coh, fit_hz)
     if note:
         notes.append(note)
         log.info("direction %s: %s", d, note)
@@ -103,7 +107,7 @@ def _direction(f, h, coh, d, band_hz, max_order, c, min_peak_share, decay, by_co
     if np.count_nonzero(in_band) < max(MIN_SAMPLES, max_order):
         raise MeasurementInputError(f"direction {d}: {np.count_nonzero(in_band)} samples in the band "
                                   f"{band[0]:g}-{band[1]:g} Hz; at least {max(MIN_SAMPLES, max_order)} are needed")
-    lscf = ema.lscf_poles(f, h, band, max_order)
+    lscf = ema.lscf_poles(f, h, fit_hz, max_order)
     cands, status, match = [], [], []
     for o, poles in enumerate(lscf.poles):
         cur = candidates(lscf.orders[o], poles, band, c.max_damping)
@@ -181,7 +185,7 @@ def _band(f: np.ndarray, band_hz, d: str) -> tuple[float, float]:
 
 
 def uniform_grid(f, h, coh, band) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, str]:
-    """The samples up to the band's end on a grid k df (what LSCF needs), interpolated when they are not on
+    """The samples up to ``band``'s end on a grid k df (what LSCF needs), interpolated when they are not on
     one already; the note says so."""
     keep = (f > 0) & (f <= band[1])
     f, h = f[keep], h[keep]
