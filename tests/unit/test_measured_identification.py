@@ -59,8 +59,8 @@ def test_noisy_frf_recovers_the_modes_including_two_close_ones():
 
 def test_fitted_modes_pasted_into_a_chatter_deck_give_the_true_lobes(tmp_path):
     """modes.yaml of the noisy FRF under `chatter: frf: modes:` loads, and its zero-order milling lobes (2 teeth,
-    full slot) are those of the true modes: the smallest limit within 5 % (measured 1.5 %), the curve within 8 %
-    at every speed (measured 4 %)."""
+    full slot) are those of the true modes: the smallest limit within 5 % (measured 1.876 against 1.871 mm, +0.3 %),
+    the curve within 8 % at every one of 181 speeds (measured at most 1.1 %)."""
     from spindlesim.chatter import build_chatter
     from spindlesim.chatter.zero_order import zero_order_lobes
     from spindlesim.deck import parse_deck
