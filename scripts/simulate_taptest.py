@@ -31,12 +31,12 @@ ROOT = Path(__file__).parents[1]
 RATE_HZ, SAMPLES, IMPACTS, DOUBLE_HIT, SEED = 8000, 4000, 4, 3, 30
 #: RMS noise of the force and the acceleration channels, as a share of their peaks
 FORCE_NOISE, RESPONSE_NOISE = 0.002, 0.0005
-WHAT = [f"SIMULATED tap test, not a measurement: decks/milling_spindle.yaml at rest (0 rpm), direct receptance x at the",
+WHAT = ["SIMULATED tap test, not a measurement: decks/milling_spindle.yaml at rest (0 rpm), direct receptance x at the",
         "tool tip (node 26), as `spindlesim frf decks/milling_spindle.yaml --speed 0` computes it, struck by a virtual",
         f"hammer (half-sine 0.3 ms, about 500 N) and read by a virtual accelerometer: {IMPACTS} impacts of "
         f"{SAMPLES / RATE_HZ:g} s at {RATE_HZ} samples/s,",
-        f"normal noise on both channels ({100 * FORCE_NOISE:g} % and {100 * RESPONSE_NOISE:g} % of their peaks, seed {SEED}), "
-        f"impact {DOUBLE_HIT} a double hit (1.5 ms, 40 %);",
+        f"normal noise on both channels ({100 * FORCE_NOISE:g} % and {100 * RESPONSE_NOISE:g} % of their peaks, "
+        f"seed {SEED}), impact {DOUBLE_HIT} a double hit (1.5 ms, 40 %);",
         "scripts/simulate_taptest.py writes it."]
 
 
@@ -53,13 +53,14 @@ def main(out: Path = ROOT / "decks" / "taptest") -> None:
                                response_noise=RESPONSE_NOISE)
     out.mkdir(parents=True, exist_ok=True)
     for k, r in enumerate(records, start=1):
-        lines = [f"# {w}" for w in WHAT] + [f"# impact {k} of {IMPACTS}" + (" (the double hit)" if k == DOUBLE_HIT else ""),
-                                             "time_s,force_N,acceleration_m_s2"]
+        which = f"# impact {k} of {IMPACTS}" + (" (the double hit)" if k == DOUBLE_HIT else "")
+        lines = [f"# {w}" for w in WHAT] + [which, "time_s,force_N,acceleration_m_s2"]
         lines += [f"{t:.8g},{f:.5g},{a:.5g}" for t, f, a in zip(r.time_s, r.force_N, r.response)]
         (out / f"tap_impact_x_{k}.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
     from spindlesim.measured.records import read_impact_records  # the FRF of the files as written (rounded)
 
-    res = frf_from_impacts([r for k in range(1, IMPACTS + 1) for r in read_impact_records(out / f"tap_impact_x_{k}.csv")])
+    res = frf_from_impacts([r for k in range(1, IMPACTS + 1)
+                            for r in read_impact_records(out / f"tap_impact_x_{k}.csv")])
     H = np.zeros((len(res.frequency_hz), 2, 2), complex)
     C = np.full(H.shape, np.nan)
     H[:, 0, 0], C[:, 0, 0] = res.receptance_m_N, res.coherence

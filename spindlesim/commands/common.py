@@ -93,12 +93,13 @@ def remove_empty_outdirs() -> None:
 
 
 def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
-    """The output folder (``-o``, else out/<deck stem>[/sub]; ``loaded``: the deck, or the stem itself), made and checked writable before anything
-    is computed: a folder that cannot be written is one line and exit code 2, not a failure after the
-    computation."""
+    """The output folder (``-o``, else out/<deck stem>[/sub]; ``loaded``: the deck, or the stem itself), made and
+    checked writable before anything is computed: a folder that cannot be written is one line and exit code 2, not
+    a failure after the computation."""
     import tempfile
 
-    out = outdir if outdir is not None else Path("out") / (loaded if isinstance(loaded, str) else loaded.stem) / sub
+    stem = loaded if isinstance(loaded, str) else loaded.stem
+    out = outdir if outdir is not None else Path("out") / stem / sub
     try:
         made = [p for p in (out, *out.parents) if not p.exists()]
         out.mkdir(parents=True, exist_ok=True)

@@ -6,7 +6,8 @@ order 2, 4, ..., 2 ``max_order``; sdypy-EMA's LSFD gives each order's residues o
 through the orders); LSFD gives the chosen poles' residues with the upper and lower residuals.  Each mode
 is then put in the chatter section's modal form H = 1 / (k (1 - r^2 + 2 j zeta r)) with f_n = |lambda| /
 2 pi, zeta = -Re lambda / |lambda| and 1 / m = -2 w_d Im A (k = w_n^2 m): the real mode with the same pole
-whose residue is the measured one's component along -j (a real mode's residue is -j / (2 m w_d)).  Modes of no physical meaning are left out and said so: negative damping, a
+whose residue is the measured one's component along -j (a real mode's residue is -j / (2 m w_d)).  Modes of no
+physical meaning are left out and said so: negative damping, a
 residue of the wrong sign for a direct (driving-point) FRF (negative k), a peak 1 / (2 zeta k) under
 ``min_peak_share`` of the largest |H| in the band (a tiny residue).
 
@@ -18,7 +19,8 @@ LSFD of sdypy-EMA fit every sample of the band alike.  LSCF needs equally spaced
 their step; other samples are interpolated (linearly, real and imaginary parts) onto such a grid first.
 
 The band picks the modes reported, their residues (LSFD) and the fit errors.  LSCF is fitted from the band's low
-edge (with a coherence: from the coherent band's, when that is lower) to the end of the data: its discrete-time
+edge (with a coherence: from the coherent band's, when that is lower) to the end of the usable data (the file's,
+or with a coherence the coherent band's, when that is higher than the band's): its discrete-time
 model takes the last frequency for its Nyquist frequency, and a band's upper edge inside the data is a
 discontinuity there, whose poles scatter through the band (docs/decisions.md: on the packaged tap test,
 LSCF cut at 2800 Hz found no mode of 1800-2800 Hz stable; to the file's end both).
@@ -82,13 +84,14 @@ def identify_modes(frf, band_hz: tuple[float, float] | None = None, *, direction
         f = np.asarray(frf.frequency_hz, float)
         usable = _band(f, None, d) if coh is None else coherent_band(f, coh)
         if usable is None:
-            raise MeasurementInputError(f"direction {d}: the coherence never reaches {COHERENCE_LEVEL} (a running median "
-                                        f"over {COHERENCE_WINDOW} samples): no usable band")
+            raise MeasurementInputError(f"direction {d}: the coherence never reaches {COHERENCE_LEVEL} (a running "
+                                        f"median over {COHERENCE_WINDOW} samples): no usable band")
         band = _band(f, usable if band_hz is None else band_hz, d)
         notes = [f"band {band[0]:g}-{band[1]:g} Hz: where the coherence (running median over {COHERENCE_WINDOW} "
                  f"samples) is at least {COHERENCE_LEVEL}"] if band_hz is None and coh is not None else []
-        # LSCF sees the usable data from the band's low edge (or lower, down to the usable band's) to their end
-        fit = (min(band[0], usable[0]) if coh is not None else band[0], max(band[1], _band(f, None, d)[1]))
+        # LSCF sees the usable data (the coherent band, else the file) from the band's low edge, or lower down to
+        # the usable band's with a coherence, to the usable band's end
+        fit = (min(band[0], usable[0]) if coh is not None else band[0], max(band[1], usable[1]))
         out.append(_direction(f, h, coh, d, band, fit, max_order, criteria, min_peak_share, float(decay[i]), notes))
     return ModalIdentification(tuple(out), frf.source, criteria, max_order, min_peak_share,
                                f"sdypy-EMA {ema.ema_version()}")
@@ -106,7 +109,7 @@ def _direction(f, h, coh, d, band, fit_hz, max_order, c, min_peak_share, decay, 
     in_band = (f >= band[0]) & (f <= band[1])
     if np.count_nonzero(in_band) < max(MIN_SAMPLES, max_order):
         raise MeasurementInputError(f"direction {d}: {np.count_nonzero(in_band)} samples in the band "
-                                  f"{band[0]:g}-{band[1]:g} Hz; at least {max(MIN_SAMPLES, max_order)} are needed")
+                                    f"{band[0]:g}-{band[1]:g} Hz; at least {max(MIN_SAMPLES, max_order)} are needed")
     lscf = ema.lscf_poles(f, h, fit_hz, max_order)
     cands, status, match = [], [], []
     for o, poles in enumerate(lscf.poles):
@@ -148,7 +151,8 @@ def _direction(f, h, coh, d, band, fit_hz, max_order, c, min_peak_share, decay, 
         fb, fit.frequency_hz, fit.reconstructed.imag)
     if decay:
         notes.append(f"exponential window of the measurement (decay {decay:.4g} 1/s) taken off every pole: the "
-                     "damping ratios are the structure's; the fitted curves and errors are with the window, as measured")
+                     "damping ratios are the structure's; the fitted curves and errors are with the window, as "
+                     "measured")
     modal = modal_receptance(modes, fb, decay)
     return DirectionIdentification(
         d, band, fb, hb, fitted, modal, None if coh is None else coh[in_band], tuple(modes), tuple(discarded),

@@ -55,13 +55,14 @@ def frf_from_impacts(records: Sequence[ImpactRecord], *, direction: str | None =
     first = records[0]
     for r in records[1:]:
         if abs(r.dt_s - first.dt_s) > 1e-6 * first.dt_s:
-            raise MeasurementInputError(f"{r.where}: time step {r.dt_s:.6g} s, the first record's is {first.dt_s:.6g} s "
-                              f"({first.where}); every impact must be sampled alike")
+            raise MeasurementInputError(f"{r.where}: time step {r.dt_s:.6g} s, the first record's is "
+                                        f"{first.dt_s:.6g} s ({first.where}); every impact must be sampled alike")
         if len(r.force_N) != len(first.force_N):
-            raise MeasurementInputError(f"{r.where}: {len(r.force_N)} samples, the first record has {len(first.force_N)} "
-                              f"({first.where}); every impact must be as long")
+            raise MeasurementInputError(f"{r.where}: {len(r.force_N)} samples, the first record has "
+                                        f"{len(first.force_N)} ({first.where}); every impact must be as long")
         if r.kind != first.kind:
-            raise MeasurementInputError(f"{r.where}: {r.kind} records, the first record has {first.kind} ({first.where})")
+            raise MeasurementInputError(f"{r.where}: {r.kind} records, the first record has {first.kind} "
+                                        f"({first.where})")
     direction = _direction(records, direction)
     verdicts = []
     for r in records:
@@ -73,8 +74,8 @@ def frf_from_impacts(records: Sequence[ImpactRecord], *, direction: str | None =
             log.info("%s: left out (%s)", r.where, ", ".join(reasons))
     used = [r for r, v in zip(records, verdicts) if v.used]
     if not used:
-        raise MeasurementInputError("every impact was rejected: " + "; ".join(f"{v.where}: {', '.join(v.reasons)}"
-                                                                    for v in verdicts))
+        raise MeasurementInputError("every impact was rejected: " + "; ".join(
+            f"{v.where}: {', '.join(v.reasons)}" for v in verdicts))
     n, dt = len(first.force_N), first.dt_s
     t = dt * np.arange(n)
     force = np.array([r.force_N for r in used])
@@ -94,6 +95,9 @@ def frf_from_impacts(records: Sequence[ImpactRecord], *, direction: str | None =
         if not decay and tail > tail_limit:
             notes.append(f"the response over the records' last {100 * TAIL_SHARE:g} % is still {100 * tail:.2g} % of "
                          "its peak and no exponential window was asked for: leakage near lightly damped modes")
+        elif decay:
+            notes.append(f"exponential window e^(-{decay:.4g} t) applied as asked (every damping ratio of the FRF is "
+                         "higher by that decay / w_n; spindlesim fitmodes takes it off)")
     cut = force_window_end(force, dt)
     fw = force_window(n, cut, dt)
     ew = np.exp(-decay * t)
@@ -113,7 +117,8 @@ def _direction(records: list[ImpactRecord], direction: str | None) -> str:
             log.warning("the records say direction %s; taken as %s (--direction)", ", ".join(sorted(stated)), direction)
         return direction
     if len(stated) > 1:
-        raise MeasurementInputError(f"the records are in directions {', '.join(sorted(stated))}: one tap test is one direction")
+        raise MeasurementInputError(f"the records are in directions {', '.join(sorted(stated))}: one tap test is one "
+                                    "direction")
     return stated.pop() if stated else "x"
 
 
@@ -146,8 +151,8 @@ def second_pulse(force: np.ndarray, dt_s: float, share: float = 0.1, level: floa
     k = int(np.argmax(outside))
     if outside[k] < share * a[p]:
         return ""
-    return (f"double hit: a second pulse {1e3 * (k - p) * dt_s:+.3g} ms from the first at {100 * outside[k] / a[p]:.0f} % "
-            "of its force")
+    return (f"double hit: a second pulse {1e3 * (k - p) * dt_s:+.3g} ms from the first at "
+            f"{100 * outside[k] / a[p]:.0f} % of its force")
 
 
 def pulse_start(force: np.ndarray, level: float = 0.05) -> int:

@@ -156,7 +156,8 @@ def read_impact_uff(path) -> list[ImpactRecord]:
         kind = int(d.get("ordinate_spec_data_type", 0))
         label = str(d.get("ordinate_axis_units_lab", "")).strip().lower().replace("µ", "u")
         sign = float(np.sign(int(d.get("rsp_dir", 0))) or 1.0)
-        item = (n, line, x, y.astype(float) * sign * _uff_scale(path, line, n, kind, label), abs(int(d.get("rsp_dir", 0))))
+        values = y.astype(float) * sign * _uff_scale(path, line, n, kind, label)
+        item = (n, line, x, values, abs(int(d.get("rsp_dir", 0))))
         if kind == 13:
             forces.append(item)
         elif kind in _UFF_RESPONSES:

@@ -28,7 +28,8 @@ def stabilisation_figure(ident):
         for m in d.modes:
             ax.axvline(m.frequency_hz, color="C0", lw=0.8, alpha=0.6)
         for k, m in enumerate(d.discarded):
-            ax.axvline(m.frequency_hz, color="C3", lw=0.8, ls="--", label="left out (computational)" if k == 0 else None)
+            ax.axvline(m.frequency_hz, color="C3", lw=0.8, ls="--",
+                       label="left out (computational)" if k == 0 else None)
         ax.set_xlim(d.band_hz)
         ax.set_ylabel("model order")
         ax.set_title(f"{d.direction}: {len(d.modes)} mode(s) in {d.band_hz[0]:g}-{d.band_hz[1]:g} Hz "

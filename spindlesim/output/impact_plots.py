@@ -8,7 +8,8 @@ import numpy as np
 
 from .figures import new_figure
 
-_RESPONSE_LABEL = {"acceleration": "acceleration [m/s^2]", "velocity": "velocity [m/s]", "displacement": "displacement [m]"}
+_RESPONSE_LABEL = {"acceleration": "acceleration [m/s^2]", "velocity": "velocity [m/s]",
+                   "displacement": "displacement [m]"}
 
 
 def records_figure(res):

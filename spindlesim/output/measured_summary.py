@@ -15,7 +15,8 @@ def fitmodes_summary(ident, yaml_path: Path | None = None):
     data: dict = {"source": ident.source, "modes": [], "discarded": [], "fit_error": {}, "modal_fit_error": {}}
     for d in ident.directions:
         lines.append(f"  {d.direction}: band {d.band_hz[0]:g}-{d.band_hz[1]:g} Hz, fit error {100 * d.fit_error:.2f} % "
-                     f"rms (modes and residuals), {100 * d.modal_fit_error:.2f} % (the modes alone, as chatter gets them)")
+                     f"rms (modes and residuals), {100 * d.modal_fit_error:.2f} % (the modes alone, as chatter gets "
+                     "them)")
         lines.append(f"     {'f [Hz]':>9s} {'zeta':>8s} {'k [N/m]':>10s} {'peak [um/N]':>11s} {'coherence':>9s}"
                      f" {'stable orders':>13s}")
         for m in d.modes:
@@ -45,7 +46,8 @@ def impact_summary(res, csv_path: Path | None = None):
              f"direction {res.direction}"]
     for v in res.rejected:
         lines.append(f"  left out {v.where}: {', '.join(v.reasons)}")
-    window = f"exponential window e^(-{res.window_decay_1_s:.4g} t)" if res.window_decay_1_s else "no exponential window"
+    window = (f"exponential window e^(-{res.window_decay_1_s:.4g} t)" if res.window_decay_1_s
+              else "no exponential window")
     lines.append(f"  force window to {1e3 * res.force_window_s:.3g} ms; {window}; response at the records' end "
                  f"{100 * res.tail_share:.2g} % of its peak")
     peaks = res.peaks_hz()

@@ -63,13 +63,14 @@ def test_fitmodes_without_file_runs_the_packaged_tap_test(tmp_path):
     assert res.exit_code == 0, res.output
     for text in ("5 mode(s)", "fit error", "f [Hz]", "1090.", "2616.", "taken as x", "band 430-4000 Hz"):
         assert text in res.output, res.output
-    assert sorted(p.name for p in out.iterdir()) == ["fitmodes.h5", "fitmodes_overlay.png", "fitmodes_stabilisation.png",
-                                                      "modes.yaml"]
+    assert sorted(p.name for p in out.iterdir()) == ["fitmodes.h5", "fitmodes_overlay.png",
+                                                      "fitmodes_stabilisation.png", "modes.yaml"]
     _units_follow_names(out / "fitmodes.h5")
     import yaml
 
     modes = yaml.safe_load((out / "modes.yaml").read_text())
-    assert [m["direction"] for m in modes] == ["x"] * 5 and {"frequency_hz", "damping_ratio", "stiffness_N_m"} <= set(modes[0])
+    assert [m["direction"] for m in modes] == ["x"] * 5
+    assert {"frequency_hz", "damping_ratio", "stiffness_N_m"} <= set(modes[0])
     with h5py.File(out / "fitmodes.h5") as f:
         assert f["fitmodes/modes/frequency_hz"].shape == (5,) and f["fitmodes/x/measured_m_N"].dtype.kind == "c"
         assert f.attrs["deck_source"].endswith("tap_tip_x.csv") and "SIMULATED tap test" in f.attrs["deck_text"]
@@ -77,7 +78,8 @@ def test_fitmodes_without_file_runs_the_packaged_tap_test(tmp_path):
 
 
 def test_fitmodes_json_band_and_direction(tmp_path):
-    res = _run("fitmodes", TAPTEST / "tap_tip_x.csv", "--direction", "x", "--band", "1800:2800", "-o", tmp_path, "--json")
+    res = _run("fitmodes", TAPTEST / "tap_tip_x.csv", "--direction", "x", "--band", "1800:2800", "-o", tmp_path,
+               "--json")
     assert res.exit_code == 0, res.output
     data = json.loads(res.stdout)["summary"]["fitmodes"]
     assert [round(m["frequency_hz"]) for m in data["modes"]] == [2034, 2617]

@@ -196,7 +196,8 @@ def test_classify_frequency_damping_and_residue_in_turn():
     """Against the previous order's nearest pole: 1 % in frequency, 5 % in damping, 10 % in residue."""
     c = StabilityCriteria()
     prev = _cands(4, [100.0, 500.0, 900.0, 1300.0], [0.02, 0.02, 0.02, 0.02], [-1j, -1j, -1j, -1j])
-    cur = _cands(6, [100.5, 503.0, 909.5, 1300.5, 2000.0], [0.0201, 0.0202, 0.02, 0.023], [-1.05j, -1.2j, -1j, -1j, -1j])
+    cur = _cands(6, [100.5, 503.0, 909.5, 1300.5, 2000.0], [0.0201, 0.0202, 0.02, 0.023],
+                 [-1.05j, -1.2j, -1j, -1j, -1j])
     status, match = classify(cur, prev, c)
     #          stable  residue 20 % off    10.5 % off -> 1.05 %: new   damping 15 % off   no neighbour
     assert status.tolist() == [STABLE, STABLE_DAMPING, NEW, STABLE_FREQUENCY, NEW]

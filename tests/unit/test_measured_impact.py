@@ -31,7 +31,8 @@ def test_h1_recovers_the_frf_near_resonance_with_coherence_near_1():
     records = simulate_impacts(_h, RATE, SAMPLES, 5, seed=3, double_hit=2, force_noise=0.005, response_noise=0.005)
     res = frf_from_impacts(records)
     assert [v.used for v in res.verdicts] == [True, False, True, True, True]
-    assert re.fullmatch(r"double hit: a second pulse \+1\.4\d ms from the first at 3\d % of its force", res.verdicts[1].reasons[0])
+    assert re.fullmatch(r"double hit: a second pulse \+1\.4\d ms from the first at 3\d % of its force",
+                        res.verdicts[1].reasons[0])
     assert res.window_decay_1_s == 0.0 and res.direction == "x" and res.kind == "acceleration"
     for m in TRUE:
         near = np.abs(res.frequency_hz - m.frequency_hz) <= m.damping_ratio * m.frequency_hz
@@ -156,7 +157,8 @@ def test_uff58_time_records(tmp_path):
     sets = []
     for r in records:
         for data, kind, label in ((r.force_N, 13, "N"), (r.response / 9.80665, 12, "g")):
-            sets.append(pyuff.prepare_58(func_type=1, rsp_node=1, rsp_dir=2, ref_node=1, ref_dir=2, data=data, x=r.time_s,
+            sets.append(pyuff.prepare_58(func_type=1, rsp_node=1, rsp_dir=2, ref_node=1, ref_dir=2, data=data,
+                                         x=r.time_s,
                                          id1="tap", rsp_ent_name="tool", ref_ent_name="tool", abscissa_spacing=1,
                                          abscissa_spec_data_type=17, ordinate_spec_data_type=kind,
                                          orddenom_spec_data_type=0, ordinate_axis_units_lab=label))
