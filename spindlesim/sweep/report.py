@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from ..output.figures import new_figure, save_figure
-from ..output.hdf5 import RunInfo, write_h5
+from ..output.hdf5 import Data, RunInfo, write_h5
 from .runner import verdict_word, DONE, FAILED, INCOMPLETE, INTERRUPTED, NOT_RUN, SweepResult
 from .summary import OVERLAYS, is_bookkeeping, key_order, unit_from_name
 
@@ -19,10 +19,12 @@ _DISPLAY = {"m": ((1.0, 1.0, "m"), (1e-3, 1e-3, "mm"), (1e-6, 1e-6, "um"), (0.0,
             "m/N": ((1e-6, 1e-6, "um/N"), (0.0, 1e-9, "nm/N")), "m^2": ((1.0, 1.0, "m^2"), (0.0, 1e-6, "mm^2"))}
 
 
-def _column(values: list, unit: str) -> tuple[np.ndarray, str]:
+def _column(values: list, unit: str):
     if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
         return np.asarray(values, float), unit or "deck units"
-    return np.array([str(v) for v in values], dtype=object), "1"
+    # a matrix or a word: the values as the deck writes them, in the unit its key names
+    return Data(np.array([str(v) for v in values], dtype=object), unit or "1", None,
+                "the values as written in the deck (text)")
 
 
 def scalar_table(res: SweepResult) -> dict[str, np.ndarray]:
