@@ -89,7 +89,11 @@ def parse_set_option(option: str) -> tuple[str, list[Any]]:
 
 
 def set_path(data: Any, path: str, value: Any) -> None:
-    """Set ``value`` at dotted ``path`` in the YAML data (in place); raise KeyError naming the bad part."""
+    """Set ``value`` at dotted ``path`` in the YAML data (in place); raise KeyError naming the bad part.
+
+    A mapping the path passes through that the deck leaves out (a key with a default, e.g. a bearing's
+    ``damping``) is created empty: the case's deck is validated before it runs, so a misspelt key is still
+    reported there."""
     parts = path.split(".")
     cur = data
     for i, part in enumerate(parts):
@@ -99,8 +103,8 @@ def set_path(data: Any, path: str, value: Any) -> None:
             if last:
                 cur[part] = value
                 return
-            if part not in cur:
-                raise KeyError(f"{where}: no such key in the deck")
+            if part not in cur or cur[part] is None:
+                cur[part] = {}
             cur = cur[part]
         elif isinstance(cur, list):
             idx = _list_index(cur, part, where)
