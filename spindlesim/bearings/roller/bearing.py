@@ -93,7 +93,7 @@ class RigidRaceBearing(RigidRace, BearingBase):
         a = shaft_angle(speed, t, angle)
         th, d = self.deflection_m(np.asarray(q, float)[:2], a)
         Q = self.stiffness * np.maximum(d, 0.0) ** self.exponent
-        return {"force": (-np.array([Q @ np.cos(th), Q @ np.sin(th)]), "N"), "roller_load_N": (Q, "N")}
+        return {"force": (self.force_and_tangent(q, v, t, speed, angle)[0], "N"), "roller_load_N": (Q, "N")}
 
     # the spindle's thermal model (contract: at_temperatures, heat) ------------
     def at_temperatures(self, temperatures) -> "RigidRaceBearing":
