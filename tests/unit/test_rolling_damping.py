@@ -117,3 +117,16 @@ def test_bad_beta_is_a_located_deck_error(value, message):
     line = text.splitlines().index(f"    damping: {{stiffness_proportional_s: {value}}}") + 1
     assert f"milling.yaml:{line}:" in str(exc.value)
     assert "bearings[1].damping.stiffness_proportional_s" in str(exc.value) and message in str(exc.value)
+
+
+def test_a_beta_far_outside_the_literature_range_is_a_plausibility_warning():
+    from spindlesim.deck.plausibility import plausibility_warnings
+
+    base = open(MILLING).read()
+    assert not [w for w in plausibility_warnings(parse_deck(base).deck) if "damping" in str(w[0])]
+    for beta, warned in ((1e-5, False), (2e-4, False), (1e-3, True), (1e-8, True), (0.0, False)):
+        text = base.replace("    preload: {kind: spring, axial_N: 300.0}\n",
+                            f"    preload: {{kind: spring, axial_N: 300.0}}\n    damping: {{stiffness_proportional_s: {beta}}}\n")
+        found = [w for w in plausibility_warnings(parse_deck(text).deck)
+                 if w[0] == ("bearings", 1, "damping", "stiffness_proportional_s")]
+        assert bool(found) == warned, (beta, found)
