@@ -13,18 +13,23 @@ that strains it radially.  A mode whose strain energy lies in the bearing gets t
 zeta = beta omega / 2 (1.0 % at 318 Hz with the default).
 
 The contract (``bearings/base.py``): ``linearized`` returns C = beta K at the operating point (K the
-pitch-averaged tangent); ``force_and_tangent`` returns the force f_el(q) - beta K_t(q) v with C_t = beta K_t
-(the damping force of the linear model about every state; K_t stays the tangent of the elastic force:
-the derivative of K_t(q) v along q, second order in the motion, is left out of it).
+pitch-averaged tangent).  ``force_and_tangent`` returns the force f_el(q) - C v with C_t = C, where C is
 
-Only pydantic is imported here: the deck sections import :class:`RollingDamping`, and the helpers work on
-whatever arrays they are given.
+* for a time integration (the bearing of ``at_operating_point(..., transient=True)``): beta K at that
+  operating point, held: a linear damper with the coefficients of the modal analysis.  The state's own
+  beta K_t(q) is not smooth where a rolling element or a roller slice enters contact (k ~ delta^(n-1)), and
+  Newton's iterations of the implicit integrator stalled on it (seed 001's preload study at 50 um:
+  corrections of 8e-12 m that no longer fell);
+* otherwise beta K_t(q) of the state (K_t stays the tangent of the elastic force).
+
+Only pydantic and numpy are imported here.
 """
 
 from __future__ import annotations
 
 from typing import Annotated
 
+import numpy as np
 from pydantic import Field
 
 from ..fields import DeckModel
@@ -59,9 +64,13 @@ def check_beta(beta_s: float) -> float:
     return b
 
 
-def damped(f, K, v, beta_s: float):
-    """(f - beta K v, beta K): the reaction with the damping force of C = beta K and its C_t (``v`` the
-    velocity of the DOFs of K; the arrays are the caller's, not copied when beta is 0)."""
+def damped(f, K, v, beta_s: float, held=None):
+    """(f - C v, C): the reaction with the damping force and its C_t (``v`` the velocity of the DOFs of K):
+    C = ``held`` when given (the damping matrix held at an operating point for a time integration), else
+    beta K (the state's own tangent)."""
+    if held is not None:
+        C = np.array(held, float).reshape(K.shape)
+        return f - C @ v, C
     if beta_s == 0.0:
         return f, 0.0 * K
     C = beta_s * K

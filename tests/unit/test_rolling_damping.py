@@ -130,3 +130,29 @@ def test_a_beta_far_outside_the_literature_range_is_a_plausibility_warning():
         found = [w for w in plausibility_warnings(parse_deck(text).deck)
                  if w[0] == ("bearings", 1, "damping", "stiffness_proportional_s")]
         assert bool(found) == warned, (beta, found)
+
+
+def test_a_time_integration_holds_the_damping_of_its_operating_point():
+    """at_operating_point(..., transient=True): C = beta K of the operating point, held (a linear damper),
+    in the Python force and in the rigid race's compiled force."""
+    from spindlesim.bearings.roller import rigid_race_kernel
+
+    W = 18000 * RPM
+    front = _milling_bearings()["front"]
+    load = np.array([150.0, -80.0, 40.0, 0.0, 0.0])
+    frozen = front.at_operating_point(W, load, transient=True)
+    C_op = front.linearized(W, load)[1]
+    q, v = np.full(5, 2e-7), np.array([1e-3, -2e-3, 5e-4, 3e-2, 1e-2])
+    f0 = frozen.force_and_tangent(q, np.zeros(5), 0.0, W)[0]
+    f1, _, C1 = frozen.force_and_tangent(q, v, 0.0, W)
+    assert np.array_equal(C1, C_op) and np.allclose(f1, f0 - C_op @ v, rtol=0, atol=1e-12 * np.abs(f0).max())
+    assert front.at_operating_point(W, load) is front
+    r = BEARING_TYPES["roller"].build(_entry("roller", rollers=12, model="rigid_race"))
+    rf = r.at_operating_point(3000 * RPM, np.array([0.0, -500.0]), transient=True)
+    C_op = r.linearized(3000 * RPM, np.array([0.0, -500.0]))[1]
+    c, out = rf.compiled(), np.zeros(2)
+    qr, vr = np.array([1e-6, -3e-6]), np.array([0.01, -0.02])
+    rigid_race_kernel.force(c.floats, 0, c.ints, 0, qr, vr, 1e-3, 314.0, 0.314, out)
+    ref, _, Cr = rf.force_and_tangent(qr, vr, 1e-3, 314.0)
+    assert np.array_equal(Cr, C_op) and out == pytest.approx(ref, rel=1e-12, abs=1e-9)
+    assert np.allclose(ref, rf.force_and_tangent(qr, np.zeros(2), 1e-3, 314.0)[0] - C_op @ vr, rtol=1e-13)

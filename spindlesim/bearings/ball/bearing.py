@@ -141,7 +141,7 @@ class BallBearing(BearingBase):
     def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
                  model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4,
                  speed_growth=None, growth=None, shoulders: checks.Shoulders | None = None, race=None,
-                 made=None, damping_s: float = 0.0):
+                 made=None, damping_s: float = 0.0, damping_held=None):
         if model not in MODELS:
             raise ValueError(f"model must be one of {MODELS}, not {model!r}")
         if race is not None and np.shape(race) != (geometry.rows, geometry.balls):
@@ -171,6 +171,8 @@ class BallBearing(BearingBase):
         self.pitch_samples = int(pitch_samples)
         #: beta [s] of the damping C = beta K (:mod:`..damping`; 0: none, the contact model alone)
         self.damping_s = check_beta(damping_s)
+        #: the damping matrix held for a time integration (``at_operating_point(..., transient=True)``), or None
+        self.damping_held = None if damping_held is None else np.array(damping_held, float).reshape(5, 5)
         #: callable speed [rad/s] -> radial growth of the inner groove centre beyond rest [m] (None: rings rigid
         #: against speed); ``growth``: what the bearing's temperatures and fits changed (reporting only)
         self.speed_growth = speed_growth
@@ -231,7 +233,7 @@ class BallBearing(BearingBase):
         args = dict(preload=self.preload, name=self.name, node=self.node, model=self._base_model(),
                     rating=self.rating, pitch_samples=self.pitch_samples, speed_growth=self.speed_growth,
                     growth=self.growth, shoulders=self.shoulders, race=self._race_given, made=self.made,
-                    damping_s=self.damping_s)
+                    damping_s=self.damping_s, damping_held=self.damping_held)
         args.update(kw)
         geometry = args.pop("geometry", self.geometry)
         return BallBearing(geometry, **args)
@@ -325,7 +327,7 @@ class BallBearing(BearingBase):
         qq = np.asarray(q, float)
         ev = self._evaluate(qq, float(speed), self.cage_angle(shaft_angle(speed, t, angle)))
         vv = np.zeros(5) if v is None else np.asarray(v, float)[:5]
-        f, C = damped(ev.f.copy(), ev.K.copy(), vv, self.damping_s)
+        f, C = damped(ev.f.copy(), ev.K.copy(), vv, self.damping_s, self.damping_held)
         return f, ev.K.copy(), C
 
     def linearized(self, speed, static_load=None, start=None):
@@ -342,6 +344,13 @@ class BallBearing(BearingBase):
             K += ev.K
         K = K / self.pitch_samples
         return K, self.damping_s * K
+
+    def at_operating_point(self, speed, static_load=None, transient=False) -> "BallBearing":
+        """For a time integration: the bearing with its damping held at beta K of the operating point
+        (:mod:`..damping`); otherwise itself."""
+        if not transient or self.damping_s == 0.0:
+            return self
+        return self._copy(damping_held=self.linearized(speed, static_load)[1])
 
     def static_displacement(self, speed, static_load=None, start=None) -> np.ndarray:
         """Inner-ring displacement carrying ``static_load`` at cage angle 0, from ``start`` (the contract)."""

@@ -41,10 +41,12 @@ class DtrbBearing(BearingBase):
     def __init__(self, geometry: DtrbGeometry, preload_m: float = 0.0, *, name: str = "dtrb", node: int = 0,
                  axial_load_N: float = 0.0, row_offset_rad: Sequence[float] = (0.0, 0.0),
                  dof_names: Sequence[str] = DOFS_2, held: Sequence[float] = (0.0, 0.0, 0.0), body=None,
-                 made_preload_m: float | None = None, damping_s: float = 0.0):
+                 made_preload_m: float | None = None, damping_s: float = 0.0, damping_held=None):
         self.geometry = geometry
         #: beta [s] of the damping C = beta K (``bearings.damping``; 0: none, the contact model alone)
         self.damping_s = check_beta(damping_s)
+        #: the damping matrix held for a time integration (``at_operating_point(..., transient=True)``), or None
+        self.damping_held = None if damping_held is None else np.array(damping_held, float)
         self.preload_m = float(preload_m)
         #: rings' and rollers' ``thermal.growth.ThermoElastic`` (None: bearing steel) and delta0 as assembled
         #: (cold; None: ``preload_m``), the start of :meth:`at_temperatures`
@@ -222,7 +224,8 @@ class DtrbBearing(BearingBase):
 
     def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "DtrbBearing":
         """A radial (x, y) bearing holds axial motion and tilt at the equilibrium under the static
-        load and the deck's axial load; a 5-DOF bearing has nothing to hold."""
+        load and the deck's axial load; a 5-DOF bearing has nothing to hold.  For a time integration the
+        damping is held too, at beta K of the operating point (``bearings.damping``)."""
         held = self._held
         if len(self.dof_names) != 5:
             held = self.solve(self.full_load(static_load), speed).displacement[2:]
@@ -230,7 +233,8 @@ class DtrbBearing(BearingBase):
             return TimeSteppedDtrb(self.geometry, self.preload_m, name=self.name, node=self.node,
                                    axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
                                    dof_names=self.dof_names, held=held, body=self.body,
-                                   made_preload_m=self.made_preload_m, damping_s=self.damping_s)
+                                   made_preload_m=self.made_preload_m, damping_s=self.damping_s,
+                                   damping_held=self.linearized(speed, static_load)[1] if self.damping_s else None)
         return self if len(self.dof_names) == 5 else self.with_preload(self.preload_m, held=held,
                                                                        made_preload_m=self.made_preload_m)
 
@@ -250,7 +254,7 @@ class DtrbBearing(BearingBase):
     def _damped(self, F, K, n: int, v):
         """(f, K_t, C_t) on the first n DOFs with the damping force of C = beta K_t."""
         vv = np.zeros(n) if v is None else np.asarray(v, float)[:n]
-        f, C = damped(F[:n].copy(), K[:n, :n].copy(), vv, self.damping_s)
+        f, C = damped(F[:n].copy(), K[:n, :n].copy(), vv, self.damping_s, self.damping_held)
         return f, K[:n, :n].copy(), C
 
     def frequencies_hz(self, speed: float) -> dict[str, float]:

@@ -9,7 +9,7 @@ state, the recorded outputs and the parameters of the compiled force (``rigid_ra
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
@@ -54,8 +54,15 @@ class RigidRaceBearing(RigidRace, BearingBase):
         """The contacts' reaction with the damping force -beta K_t v (``bearings.damping``); C_t = beta K_t."""
         f, K = self._at_angle(np.asarray(q, float)[:2], shaft_angle(speed, t, angle))
         vv = np.zeros(2) if v is None else np.asarray(v, float)[:2]
-        f, C = damped(f, K, vv, self.damping_s)
+        f, C = damped(f, K, vv, self.damping_s, self.damping_held)
         return f, K, C
+
+    def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "RigidRaceBearing":
+        """For a time integration: the bearing with its damping held at beta K of the operating point
+        (``bearings.damping``); otherwise itself."""
+        if not transient or self.damping_s == 0.0:
+            return self
+        return replace(self, damping_held=tuple(self.linearized(speed, static_load)[1].ravel()))
 
     def _pitch_angles(self) -> np.ndarray:
         """Shaft angles that move the cage evenly over one pitch (RIGID_RACE_PITCH_POINTS points)."""
@@ -109,14 +116,16 @@ class RigidRaceBearing(RigidRace, BearingBase):
         return thermal.heat(self, speed, static_load, lubrication, lubricant_C, displacement)
 
     def compiled(self) -> CompiledForce:
-        """floats: [K, n, gamma0, cage ratio, spin ratio, beta, cos base (N), sin base (N), waviness (4 per
-        row)]."""
+        """floats: [K, n, gamma0, cage ratio, spin ratio, beta, held C (4, row-major), cos base (N), sin base
+        (N), waviness (4 per row)]: beta K_t v, or with a held C (``at_operating_point``) C v and beta 0."""
         base = self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
         wav = np.array([[SURFACE[w.surface], w.waves, w.amplitude_m, w.phase_rad] for w in self.waviness],
                        dtype=float).reshape(-1, 4)
         k = self.kinematics
-        floats = np.concatenate([[self.stiffness, self.exponent, self.radial_clearance_m, k.cage_ratio,
-                                  k.spin_ratio, self.damping_s], np.cos(base), np.sin(base), wav.ravel()])
+        floats = np.concatenate([[self.stiffness, self.exponent, self.radial_clearance_m, k.cage_ratio, k.spin_ratio,
+                                  0.0 if self.damping_held is not None else self.damping_s],
+                                 np.zeros(4) if self.damping_held is None else np.asarray(self.damping_held, float),
+                                 np.cos(base), np.sin(base), wav.ravel()])
         return CompiledForce(RIGID_RACE_KIND, floats, np.array([self.rollers, len(self.waviness)], np.int64))
 
 

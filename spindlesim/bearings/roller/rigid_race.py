@@ -71,6 +71,7 @@ class RigidRace:
     body: object = None  # rings' and rollers' thermal.growth.ThermoElastic (None: bearing steel), for at_temperatures
     made_clearance_m: float | None = None  # radial clearance as assembled (cold; None: radial_clearance_m)
     damping_s: float = 0.0  # beta [s] of the damping C = beta K_t (bearings.damping; 0: the contact model alone)
+    damping_held: tuple[float, ...] | None = None  # C (2x2, row-major) held for a time integration, or None
 
     def __post_init__(self) -> None:
         if self.rollers < 3:

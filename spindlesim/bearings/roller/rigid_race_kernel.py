@@ -6,8 +6,8 @@ Kankar 2004), written as a loop for numba:
     f_x = -sum_j K (x cos th_j + y sin th_j - gamma_0 + w_j)_+^n cos th_j,   f_y likewise with sin,
     th_j = phase + 2 pi j/N + c phi   (c the cage ratio, phi the shaft angle)
 
-minus the damping force beta K_t v, K_t = sum_j n K delta_j^(n-1) (cos, sin)(cos, sin)^T the contacts'
-tangent (``bearings.damping``; skipped when beta = 0).
+minus the damping force: beta K_t v, K_t = sum_j n K delta_j^(n-1) (cos, sin)(cos, sin)^T the contacts'
+tangent (``bearings.damping``; skipped when beta = 0), or C v with the matrix held at the operating point.
 
 cos th_j and sin th_j come from the angle-addition formulas with the cage angle, so a call
 costs two trigonometric evaluations whatever N is.  The parameters are the float vector of
@@ -20,10 +20,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-# float layout: K, n, gamma0, cage ratio, spin ratio, beta, cos base (N), sin base (N), waviness rows (4
-# each: surface 0 outer / 1 inner / 2 roller, waves, amplitude, phase); ints: N, waviness rows
-K, EXPONENT, CLEARANCE, CAGE_RATIO, SPIN_RATIO, DAMPING = range(6)
-HEAD = 6
+# float layout: K, n, gamma0, cage ratio, spin ratio, beta, held C (4, row-major), cos base (N), sin base (N),
+# waviness rows (4 each: surface 0 outer / 1 inner / 2 roller, waves, amplitude, phase); ints: N, waviness rows
+K, EXPONENT, CLEARANCE, CAGE_RATIO, SPIN_RATIO, DAMPING, HELD = range(7)
+HEAD = HELD + 4
 
 
 @njit(cache=True, inline="always")
@@ -73,5 +73,6 @@ def force(fl, f0, it, i0, q, v, t, speed, angle, out):
                 kxx += kj * c * c
                 kxy += kj * c * sn
                 kyy += kj * sn * sn
-    out[0] = -fx - beta * (kxx * v[0] + kxy * v[1])
-    out[1] = -fy - beta * (kxy * v[0] + kyy * v[1])
+    h = f0 + HELD
+    out[0] = -fx - beta * (kxx * v[0] + kxy * v[1]) - fl[h] * v[0] - fl[h + 1] * v[1]
+    out[1] = -fy - beta * (kxy * v[0] + kyy * v[1]) - fl[h + 2] * v[0] - fl[h + 3] * v[1]
