@@ -22,14 +22,14 @@ pitch-averaged tangent).  ``force_and_tangent`` returns the force f_el(q) - C v 
   corrections of 8e-12 m that no longer fell);
 * otherwise beta K_t(q) of the state (K_t stays the tangent of the elastic force).
 
-Only pydantic and numpy are imported here.
+Only pydantic is imported when the module loads (the deck sections import :class:`RollingDamping`, and
+loading a deck stays light); :func:`damped` imports numpy.
 """
 
 from __future__ import annotations
 
 from typing import Annotated
 
-import numpy as np
 from pydantic import Field
 
 from ..fields import DeckModel
@@ -69,6 +69,8 @@ def damped(f, K, v, beta_s: float, held=None):
     C = ``held`` when given (the damping matrix held at an operating point for a time integration), else
     beta K (the state's own tangent)."""
     if held is not None:
+        import numpy as np
+
         C = np.array(held, float).reshape(K.shape)
         return f - C @ v, C
     if beta_s == 0.0:
