@@ -70,6 +70,12 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
         os.environ.setdefault(var, "1")
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """Python warnings (numpy's "invalid value encountered ...") as one "warning:" line naming where they arose."""
+    where = "/".join(str(filename).replace("\\", "/").split("/")[-2:])
+    logging.getLogger("spindlesim").warning("%s (%s in %s:%d)", message, category.__name__, where, lineno)
+
+
 def _strict(ctx: click.Context, _param, value: bool) -> None:
     if value:
         ctx.meta["spindlesim.strict"] = True  # meta is shared by the group's and the command's contexts
@@ -95,6 +101,9 @@ def _configure_logging(verbose: int) -> None:
         root.addHandler(handler)
         root.setLevel(logging.WARNING)
     logging.getLogger("spindlesim").setLevel(logging.WARNING - 10 * min(verbose, 2))
+    import warnings
+
+    warnings.showwarning = _show_warning  # a numpy or scipy warning is one located line, not two raw ones
     if verbose:  # the sweep's Dask cluster follows -v (sweep/execution.py reads this)
         logging.getLogger("distributed").setLevel(logging.INFO if verbose == 1 else logging.DEBUG)
 

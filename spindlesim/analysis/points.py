@@ -156,10 +156,13 @@ class OperatingPoints:
                     raise
                 return self._partial(speeds, states, first, f"stopped at {s:g} rpm", False, label, exc)
             states.append(st)
-            if on_state is not None:
-                on_state(st, float(s))
-            if tick is not None:
-                tick()
+            try:  # a Ctrl-C while the caller looks at the state or shows the progress: the states found are kept
+                if on_state is not None:
+                    on_state(st, float(s))
+                if tick is not None:
+                    tick()
+            except KeyboardInterrupt:
+                return self._partial(speeds, states, first, f"interrupted by the user after {s:g} rpm", True, label)
         return Sweep(speeds[first:first + len(states)], tuple(states), "", first)
 
     def _partial(self, speeds, states, first, where, interrupted, label, exc=None) -> Sweep:

@@ -46,7 +46,9 @@ linearized(speed, static_load, start=None) -> (K, C)
     (= -f there), on ``dof_names``.  Used by static, modal, Campbell, FRF, unbalance, chatter.
     For a bearing whose reaction does not vary in time this equals the tangent of
     ``force_and_tangent`` at the displacement that carries ``static_load``; a rolling bearing
-    returns that tangent averaged over one rolling-element pitch.  ``start``: a displacement near
+    returns that tangent averaged over one rolling-element pitch, and as C the damping of its model
+    (``bearings.damping``: C = beta K for ball sets, DTRBs and rigid races, whose ``force_and_tangent``
+    carries -beta K_t v; a flexible race's own contact damping, condensed).  ``start``: a displacement near
     the one that carries ``static_load`` (node DOFs, then internal; the rotor's state there, or a
     neighbouring speed's), where a family that iterates may start (the ball set does); a start
     only, the answer is the same to the family's tolerance.

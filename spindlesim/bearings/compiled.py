@@ -91,7 +91,7 @@ def _force(h, fl, it, q, v, t, speed, angle, out):
         return linear
     if cls is RigidRaceForce:
         def rigid(h, fl, it, q, v, t, speed, angle, out):
-            rigid_race_kernel.force(fl, h.f0, it, h.i0, q, t, speed, angle, out)
+            rigid_race_kernel.force(fl, h.f0, it, h.i0, q, v, t, speed, angle, out)
         return rigid
     if cls is FlexibleRaceForce:
         def flexible(h, fl, it, q, v, t, speed, angle, out):

@@ -165,46 +165,59 @@ def modes_of_interest_hz(frf: ToolPointFrf) -> float:
     return float(min(f[-1], 1.3 * f[big].max())) if big.any() else float(f[-1])
 
 
-def stability_map_figure(diagram: LobeDiagram, title: str | None = None, rho_range: tuple[float, float] = (0.6, 1.4)
-                         ) -> Figure:
-    """Spectral radius of the monodromy matrix over speed x depth, the rho = 1 contour and the boundary."""
+def stability_map_figure(diagram: LobeDiagram, title: str | None = None) -> Figure:
+    """The stability margin 1 - rho (rho: spectral radius of the monodromy matrix) over speed x depth on a log
+    colour scale where stable, red where unstable, hatched grey above the first crossing (not evaluated there); the
+    rho = 1 contour and the boundary.  (On a diverging scale centred on rho = 1 the lightly damped modes of a rotor
+    keep rho within 1e-3 of 1 everywhere and the map came out white.)"""
+    from matplotlib.colors import ListedColormap, LogNorm
+
     smap = diagram.stability_map
     if smap is None:
         raise ValueError(f"the {diagram.method} diagram has no stability map (semi-discretization only)")
     fig = _figure(9.0, 5.0)
     ax = fig.add_subplot()
     d_mm = 1e3 * smap.depth_m
-    rho = np.ma.masked_invalid(smap.spectral_radius.T)  # NaN: not evaluated (above the first crossing)
-    mesh = ax.pcolormesh(smap.speed_rpm, d_mm, rho, shading="nearest", cmap="RdBu_r",
-                         vmin=rho_range[0], vmax=rho_range[1])
-    fig.colorbar(mesh, ax=ax).set_label("spectral radius of the monodromy matrix")
-    if len(smap.speed_rpm) > 1 and len(d_mm) > 1 and not np.ma.is_masked(rho) and np.any(rho >= 1.0):
+    rho = np.asarray(smap.spectral_radius, float).T  # NaN: not evaluated (above the first crossing)
+    ax.set_facecolor("0.88")  # what is not drawn: not evaluated
+    ax.fill_between([smap.speed_rpm[0], smap.speed_rpm[-1]], 0, d_mm[-1], facecolor="none", edgecolor="0.7",
+                    hatch="//", lw=0, label="not evaluated (above the first crossing)", zorder=0)
+    margin = np.ma.masked_where(~(rho < 1.0), 1.0 - np.where(np.isfinite(rho), rho, 0.0))
+    floor = max(float(margin.min()) if margin.count() else 1e-6, 1e-6)
+    mesh = ax.pcolormesh(smap.speed_rpm, d_mm, margin, shading="nearest", cmap="viridis",
+                         norm=LogNorm(vmin=floor, vmax=max(1.0, 10 * floor)), zorder=1)
+    fig.colorbar(mesh, ax=ax).set_label("stability margin 1 - rho (log)")
+    unstable = np.ma.masked_where(~(rho >= 1.0), np.ones_like(rho))
+    ax.pcolormesh(smap.speed_rpm, d_mm, unstable, shading="nearest", cmap=ListedColormap(["tab:red"]), zorder=1)
+    ax.fill_between([], [], [], color="tab:red", label="unstable (rho >= 1)")
+    if len(smap.speed_rpm) > 1 and len(d_mm) > 1 and np.all(np.isfinite(rho)) and np.any(rho >= 1.0):
         ax.contour(smap.speed_rpm, d_mm, rho, levels=[1.0], colors="k", linewidths=0.8)
-    ax.plot(diagram.speed_rpm, 1e3 * diagram.limit_depth_m, "k.", ms=3, label="first crossing (refined)")
+    ax.plot(diagram.speed_rpm, 1e3 * diagram.limit_depth_m, "k.", ms=3, label="first crossing (refined)", zorder=2)
     ax.set_xlabel("spindle speed [rpm]")
     ax.set_ylabel("depth of cut [mm]")
     ax.set_ylim(0.0, d_mm[-1])
-    ax.set_title(title or f"{diagram.process}\nsemi-discretization, order {smap.order}"
-                 + (" (evaluated up to the first crossing)" if np.ma.is_masked(rho) else ""), fontsize="medium")
+    ax.set_xlim(smap.speed_rpm[0], smap.speed_rpm[-1])
+    ax.set_title(title or f"{diagram.process}\nsemi-discretization, order {smap.order}", fontsize="medium")
     ax.legend(loc="upper left", fontsize="small")
     return fig
 
 
 def simulation_figure(sim: SimulationResult, title: str | None = None, periods_shown: int = 30) -> Figure:
     """Time history, spectrum (tooth-passing harmonics dotted, chatter frequency marked) and Poincare section."""
-    fig = _figure(11.0, 7.0)
-    gs = fig.add_gridspec(2, 2)
-    ax_t = fig.add_subplot(gs[0, :])
-    ax_f = fig.add_subplot(gs[1, 0])
-    ax_p = fig.add_subplot(gs[1, 1])
+    fig = _figure(11.0, 8.2)
+    active_dirs = [i for i in range(len(DIRECTIONS)) if np.any(sim.displacement_m[:, i])]
+    gs = fig.add_gridspec(1 + max(1, len(active_dirs)), 2, height_ratios=[1.0] * max(1, len(active_dirs)) + [1.6])
     t_ms = 1e3 * sim.time_s
-    for i, d in enumerate(DIRECTIONS):
-        if np.any(sim.displacement_m[:, i]):
-            ax_t.plot(t_ms, 1e6 * sim.displacement_m[:, i], lw=0.6, label=d)
+    # x and y each in a panel of its own (on one axis the one drawn last hid the other)
+    ax_t = None
+    for row, i in enumerate(active_dirs or [0]):
+        ax_t = fig.add_subplot(gs[row, :], sharex=ax_t)
+        ax_t.plot(t_ms, 1e6 * sim.displacement_m[:, i], lw=0.6, color=f"C{i}")
+        ax_t.set_ylabel(f"{DIRECTIONS[i]} [um]")
+        ax_t.grid(True, alpha=0.3)
     ax_t.set_xlabel("time [ms]")
-    ax_t.set_ylabel("displacement [um]")
-    ax_t.legend(fontsize="small", loc="upper right")
-    ax_t.grid(True, alpha=0.3)
+    ax_f = fig.add_subplot(gs[-1, 0])
+    ax_p = fig.add_subplot(gs[-1, 1])
     ax_f.semilogy(sim.spectrum_frequency_hz, 1e6 * np.maximum(sim.spectrum_amplitude_m, 1e-30), lw=0.7)
     fmax = sim.spectrum_frequency_hz[-1]
     if np.isfinite(sim.chatter_frequency_hz):

@@ -15,7 +15,8 @@ from .exits import EXIT_DECK_ERROR, exit_code_of
 
 log = logging.getLogger("spindlesim")
 
-deck_argument = click.argument("deck", required=False, type=click.Path(dir_okay=False, path_type=Path))
+#: DECK: any path; what is not a readable YAML file is a located deck error of the loader (exit 2), not click's usage
+deck_argument = click.argument("deck", required=False, type=click.Path(path_type=Path))
 outdir_option = click.option("-o", "--outdir", type=click.Path(file_okay=False, path_type=Path), default=None,
                              help="Output directory [default: out/<deck stem>].")
 

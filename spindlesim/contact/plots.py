@@ -28,7 +28,7 @@ def pressure_map_figure(result: ContactResult, title: str = "Contact pressure") 
     if result.edge_singular and p.shape[1] > 8:
         # colour scale from the interior: the end cells hold grid-dependent singular values
         vmax = 1.25 * float(p[:, 2:-2].max())
-        label = "pressure [GPa] (scale clipped: edge values grid-dependent)"
+        label = "pressure [GPa]\n(scale clipped: edge values\ngrid-dependent)"
     mesh = ax.pcolormesh(y_mm, x_mm, p, shading="nearest", cmap="viridis", vmin=0.0, vmax=vmax)
     cb = fig.colorbar(mesh, ax=ax)
     cb.set_label(label)

@@ -22,7 +22,8 @@ class DeckIssue:
 
     def __str__(self) -> str:
         where = f"{self.file}:{self.line}:{self.col}"
-        msg = f"warning: {self.message}" if self.severity == "warning" else self.message
+        text = "".join(c if ord(c) >= 32 and ord(c) != 127 else repr(c)[1:-1] for c in self.message)  # one line
+        msg = f"warning: {text}" if self.severity == "warning" else text
         return f"{where}: {self.path}: {msg}" if self.path else f"{where}: {msg}"
 
 

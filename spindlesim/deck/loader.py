@@ -34,6 +34,9 @@ ANALYSES = analysis_names()
 SUPPORTED_ANALYSES = tuple(a.name for a in ANALYSIS_REGISTRY if a.supported)
 #: bearing types that act on x and y only (no tilt or axial stiffness)
 RADIAL_ONLY = ("linear", "three_lobe", "plain", "roller")
+#: the smallest outer diameter and length of a beam element [mm] (1 um: below it the element's matrices lose
+#: every digit; a micro tool's flutes are some 10 um)
+MIN_ELEMENT_MM = 1e-3
 #: columns of a shaft, holder or tool row
 ROW_KEYS = ("outer_dia_mm", "inner_dia_mm", "length_mm", "density_kg_m3", "E_GPa", "G_GPa", "poisson",
             "axial_force_N")
@@ -164,6 +167,9 @@ def _row_checks(rows: list[list[float]], where: tuple[Any, ...], bad: list) -> N
                 continue
             elif name != "axial_force_N" and not val > 0:
                 bad.append((at, f"{name} must be > 0, got {val}"))
+                continue
+            elif name in ("outer_dia_mm", "length_mm") and val < MIN_ELEMENT_MM:
+                bad.append((at, f"{name} {val:g} is below {MIN_ELEMENT_MM:g} mm, the smallest a beam element may be"))
                 continue
             suffix, (lo, hi) = unit_range(name)  # type: ignore[misc]
             if not lo <= val <= hi:
@@ -373,8 +379,14 @@ def parse_deck(text: str, filename: str = "<deck>") -> LoadedDeck:
 
 def load_deck(path: str | Path) -> LoadedDeck:
     """Read and validate the deck at ``path``."""
+    import stat
+
     p = Path(path)
     try:
+        mode = p.stat().st_mode
+        if not stat.S_ISREG(mode):  # a directory, a socket, a pipe: never read (a pipe would block)
+            kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
+            raise DeckError([DeckIssue(str(p), 1, 1, "", f"the deck is {kind}: give a YAML file")])
         size = p.stat().st_size
         if size > 4 * MAX_TEXT_CHARS:  # UTF-8: at most 4 bytes a character
             raise DeckError([DeckIssue(str(p), 1, 1, "", f"the deck is {size} bytes; the limit is {MAX_TEXT_CHARS} "

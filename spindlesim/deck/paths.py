@@ -29,7 +29,11 @@ def list_index(items: list, part: str, where: str) -> int:
 
 
 def set_path(data: Any, path: str, value: Any) -> None:
-    """Set ``value`` at dotted ``path`` in the YAML data (in place); raise KeyError naming the bad part."""
+    """Set ``value`` at dotted ``path`` in the YAML data (in place); raise KeyError naming the bad part.
+
+    A mapping the path passes through that the deck leaves out (a key with a default, e.g. a bearing's
+    ``damping``) is created empty: the deck is validated before it is used, so a misspelt key is still
+    reported there."""
     parts = path.split(".")
     cur = data
     for i, part in enumerate(parts):
@@ -39,8 +43,8 @@ def set_path(data: Any, path: str, value: Any) -> None:
             if last:
                 cur[part] = value
                 return
-            if part not in cur:
-                raise KeyError(f"{where}: no such key in the deck")
+            if part not in cur or cur[part] is None:
+                cur[part] = {}
             cur = cur[part]
         elif isinstance(cur, list):
             idx = list_index(cur, part, where)

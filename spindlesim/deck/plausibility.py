@@ -13,6 +13,8 @@ the user probably meant.
 * a bearing or joint stiffness above 0 and below 1e5 N/m (N/mm or N/um written as N/m?);
 * bearing damping whose ratio to the stiffness, C/K, is above 1 s or below 1e-9 s (a damping
   given in another unit than N s/m);
+* a rolling bearing's stiffness-proportional damping beta (``damping.stiffness_proportional_s``) above 0 and
+  more than 10 times outside Kraemer's 0.25e-5 .. 2.5e-5 s (milliseconds or microseconds given as seconds?);
 * a ball bearing's fit (``fits_um``) above 0 and below 0.1 um in magnitude (millimetres given as
   micrometres?), a thermal expansion coefficient above 3e-5 1/K (more than any bearing metal).
 """
@@ -37,6 +39,8 @@ DAMPING_TIME_S = (1e-9, 1.0)
 MIN_FIT_UM = 0.1
 #: an expansion coefficient above this [1/K] is beyond the metals of a spindle (aluminium 23e-6)
 MAX_EXPANSION_1_K = 3e-5
+#: beta [s] of a rolling bearing's C = beta K outside these (10 x Kraemer's range) looks like another unit
+ROLLING_DAMPING_S = (2.5e-7, 2.5e-4)
 
 
 def _ball_growth(b: Any, where: tuple[Any, ...], bad: Found) -> None:
@@ -117,8 +121,20 @@ def _linear(b: Any, at: tuple[Any, ...], bad: Found) -> None:
             _damping(K, b.table.C_Ns_m[j], at + ("table", "C_Ns_m", j), bad)
 
 
+def _rolling_damping(b: Any, at: tuple[Any, ...], bad: Found) -> None:
+    damping = getattr(b, "damping", None)
+    beta = None if damping is None else damping.stiffness_proportional_s
+    lo, hi = ROLLING_DAMPING_S
+    if beta and not lo <= beta <= hi:
+        bad.append((at + ("damping", "stiffness_proportional_s"),
+                    f"stiffness_proportional_s {beta:g} s is more than 10 times outside the 0.25e-5 .. 2.5e-5 s of "
+                    "rolling bearings (Kraemer 1993): was it given in ms or us? (1.0e-5 s is the default)"))
+
+
 def _bearing(b: Any, at: tuple[Any, ...], bad: Found) -> None:
     kind = b.type
+    if kind in ("roller", "ball", "dtrb"):
+        _rolling_damping(b, at, bad)
     if kind == "linear":
         _linear(b, at, bad)
     elif kind in ("three_lobe", "plain"):

@@ -301,11 +301,20 @@ class _Builder:
         self._attach(value, path, start)
 
 
+def shown_key(key) -> str:
+    """A key as a message shows it: as written, or quoted with its escapes (``'title\\n'``) when it holds a control
+    character or starts or ends with a space (a raw line break would split the one-line message)."""
+    text = str(key)
+    if any(ord(c) < 32 or ord(c) == 127 for c in text) or text != text.strip():
+        return repr(text)
+    return text
+
+
 def path_str(path: Path) -> str:
     """``shaft.elements[3][1]`` from ``("shaft", "elements", 3, 1)``."""
     out = ""
     for p in path:
-        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+        out += f"[{p}]" if isinstance(p, int) else (f".{shown_key(p)}" if out else shown_key(p))
     return out
 
 

@@ -81,10 +81,16 @@ def assemble_shaft(rotor: Rotor) -> ShaftMatrices:
     M, G, KB, KA, KC = (np.zeros((n, n)) for _ in range(5))
     grav = np.zeros(n)
     if el.count:
-        em: ElementMatrices = lateral_element_matrices(
-            el.length_m, el.area_m2, el.second_moment_m4, el.density_kg_m3,
-            el.youngs_modulus_Pa, el.shear_modulus_Pa, el.shear_coefficient, el.axial_force_N,
-        )
+        with np.errstate(all="ignore"):  # a non-finite result is checked just below and named
+            em: ElementMatrices = lateral_element_matrices(
+                el.length_m, el.area_m2, el.second_moment_m4, el.density_kg_m3,
+                el.youngs_modulus_Pa, el.shear_modulus_Pa, el.shear_coefficient, el.axial_force_N,
+            )
+        bad = [e + 1 for e in range(el.count) if not all(np.all(np.isfinite(m[e])) for m in (
+            em.mass, em.stiffness_bending, em.gyroscopic))]
+        if bad:
+            raise ValueError(f"the matrices of shaft element(s) {bad[:10]} are not finite: their dimensions or moduli "
+                             "are beyond what a beam element can hold (check the rows' units)")
         node_a, node_b = oriented_nodes(rotor)
         rows, cols = _scatter(dofs, node_a, node_b)
         for out, e in ((M, em.mass), (G, em.gyroscopic), (KB, em.stiffness_bending), (KA, em.stiffness_axial),

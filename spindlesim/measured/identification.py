@@ -22,8 +22,8 @@ The band picks the modes reported, their residues (LSFD) and the fit errors.  LS
 edge (with a coherence: from the coherent band's, when that is lower) to the end of the usable data (the file's,
 or with a coherence the coherent band's, when that is higher than the band's): its discrete-time
 model takes the last frequency for its Nyquist frequency, and a band's upper edge inside the data is a
-discontinuity there, whose poles scatter through the band (docs/decisions.md: on the packaged tap test,
-LSCF cut at 2800 Hz found no mode of 1800-2800 Hz stable; to the file's end both).
+discontinuity there, whose poles scatter through the band; a fit starting high in the spectrum fares no better
+(docs/decisions.md, measured on the packaged tap test).
 """
 
 from __future__ import annotations
@@ -125,8 +125,8 @@ def _direction(f, h, coh, d, band, fit_hz, max_order, c, min_peak_share, decay, 
     chosen = modes_from_tracks(tracks(cands, status, match), len(cands), c)
     if not chosen:
         raise IdentificationError(f"direction {d}: no pole is stable through {c.min_stable} model orders in "
-                                  f"{band[0]:g}-{band[1]:g} Hz (orders 2 to {2 * max_order}); a narrower band or "
-                                  "a higher --max-order may help")
+                                  f"{band[0]:g}-{band[1]:g} Hz (orders 2 to {2 * max_order}); a band starting lower "
+                                  "(LSCF fits from its low edge) or another --max-order may help")
     picked = [(o, int(cands[o].index[i])) for o, i in (t.representative for t in chosen)]
     peak = float(np.max(np.abs(h[in_band])))
     # one LSFD with every chosen pole: a computational one stays in the fit (it models what is in the data, so the

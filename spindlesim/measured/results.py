@@ -174,17 +174,18 @@ class ImpactFrf:
         return float(self.coherence[k])
 
     def peaks_hz(self, count: int = 6, prominence: float = 0.05) -> np.ndarray:
-        """The resonances: the frequencies of the ``count`` most prominent peaks of |H| (prominence at least
-        ``prominence`` of the largest |H|) within the coherent band (:func:`~.bands.coherent_band`), ascending."""
+        """The resonances: the frequencies of the ``count`` most prominent peaks of |H| (averaged over 5 samples,
+        so that noise makes none; prominence at least ``prominence`` of the largest) within the coherent band
+        (:func:`~.bands.coherent_band`), ascending."""
         from scipy.signal import find_peaks
 
         from .bands import coherent_band
 
         band = coherent_band(self.frequency_hz, self.coherence) or (self.frequency_hz[0], self.frequency_hz[-1])
         inside = np.flatnonzero((self.frequency_hz >= band[0]) & (self.frequency_hz <= band[1]))
-        mag = np.abs(self.receptance_m_N[inside])
-        if len(mag) < 3:
+        if len(inside) < 5:
             return np.zeros(0)
+        mag = np.convolve(np.abs(self.receptance_m_N[inside]), np.ones(5) / 5, mode="same")
         peaks, props = find_peaks(mag, prominence=prominence * mag.max())
         top = peaks[np.argsort(props["prominences"])[::-1][:count]]
         return np.sort(self.frequency_hz[inside][top])

@@ -306,6 +306,29 @@ def _provenance(report: RunReport, outcomes: list[Outcome], ok: bool, status: st
     return "<section id=\"provenance\"><h2>Provenance</h2><table class=\"kv\">" + "".join(rows) + "</table></section>"
 
 
+def _verdicts(report: RunReport, outcomes: list[Outcome]):
+    from .verdicts import operating_range, verdicts
+
+    where = {p.stem: o.name for o in outcomes for p in o.paths}
+    return verdicts([p for o in outcomes for p in o.paths], where, operating_range(report.loaded.deck))
+
+
+def _verdict_table(found, outcomes: list[Outcome]) -> str:
+    """The verdicts at the top of the page, each linking to the section of the analysis that says it."""
+    if not found:
+        return ""
+    anchors = {o.name: _anchor(k, o.name) for k, o in enumerate(outcomes)}
+    rows = []
+    for v in found:
+        topic = f"<a href=\"#{anchors[v.analysis]}\">{e(v.topic)}</a>" if v.analysis in anchors else e(v.topic)
+        rows.append(f"<tr><td>{topic}</td><td class=\"st {_VERDICT_CLS[v.status]}\">{e(v.text)}</td></tr>")
+    return ("<section id=\"verdicts\"><h2>Verdicts</h2><table class=\"grid verdicts\"><thead><tr><th>what</th>"
+            "<th>verdict</th></tr></thead><tbody>" + "".join(rows) + "</tbody></table></section>")
+
+
+_VERDICT_CLS = {"ok": "ok", "warn": "warn", "bad": "bad", "info": "info"}
+
+
 def _overview(outcomes: list[Outcome]) -> str:
     rows = []
     for k, o in enumerate(outcomes):
@@ -387,12 +410,17 @@ def _deck(report: RunReport) -> str:
             "</section>")
 
 
-def _header(title: str, ok: bool, status: str, problems: bool, n_warnings: int) -> str:
+def _header(title: str, ok: bool, status: str, problems: bool, n_warnings: int, found=()) -> str:
     from .. import __version__
 
     if n_warnings:
         status += f"; {n_warnings} warning{'s' if n_warnings != 1 else ''}"
-    links = [("provenance", "Provenance"), ("analyses", "Analyses")] + [("failures", "Failures")] * problems \
+    failing = [v.topic for v in found if v.status == "bad"]
+    if failing:  # the run finished, the spindle does not pass: the banner says so first
+        status = f"NOT MET: {', '.join(failing)}. " + status
+        ok = False
+    links = [("verdicts", "Verdicts")] * bool(found) + [("provenance", "Provenance"), ("analyses", "Analyses")] \
+        + [("failures", "Failures")] * problems \
         + [("warnings", "Warnings")] * bool(n_warnings) + [("deck", "Deck")]
     nav = " ".join(f"<a href=\"#{a}\">{t}</a>" for a, t in links)
     return (f"<header><p class=\"kicker\">spindlesim {e(__version__)} run report</p><h1>{e(title)}</h1>"
@@ -407,7 +435,8 @@ def render(report: RunReport) -> str:
     warnings = list(report.warnings.values())
     problems = any(o.status in (FAILED, INTERRUPTED, INCOMPLETE) for o in outcomes)
     figure_no = [0]
-    body = [_header(title, ok, status, problems, len(warnings)), "<main>",
+    found = _verdicts(report, outcomes)
+    body = [_header(title, ok, status, problems, len(warnings), found), "<main>", _verdict_table(found, outcomes),
             _provenance(report, outcomes, ok, status), _overview(outcomes), _problems(outcomes, warnings)]
     body += [_analysis(k, o, figure_no) for k, o in enumerate(outcomes) if o.status in (DONE, INCOMPLETE)]
     body += [_deck(report), "</main><footer>Written by spindlesim from the files of this run; the figures are "

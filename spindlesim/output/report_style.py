@@ -43,6 +43,9 @@ ul.failures li { margin: 0.3rem 0; }
 pre { background: var(--band); border: 1px solid var(--line); padding: 0.6rem 0.8rem; font-size: 0.82rem;
   line-height: 1.35; overflow-x: auto; white-space: pre; }
 pre .alert { color: var(--bad); font-weight: 700; }
+pre.summary { white-space: pre-wrap; overflow-wrap: anywhere; overflow-x: visible; }
+.info { color: inherit; }
+table.verdicts td:first-child { width: 16rem; font-weight: 600; }
 pre.deck { max-height: 40rem; overflow: auto; }
 details summary { cursor: pointer; color: #1f5fa8; }
 figure { margin: 1.2rem 0; }

@@ -98,8 +98,13 @@ def warm_up_figure(t, title: str = ""):
     _preload_and_drift(axes[1:3 if drift else 2], minutes, t, None)
     if t.frequency_hz is not None:
         ax = axes[2 + drift]
+        # modes of one pair (backward and forward whirl) lie on top of each other: each its own line style and
+        # marker, the lower one drawn wider under the higher, so both show
+        styles = (("-", "o", 2.6), ("--", "s", 1.4), ("-", "^", 2.6), ("--", "v", 1.4))
         for k in range(t.frequency_hz.shape[1]):
-            ax.plot(minutes, t.frequency_hz[:, k], "-", label=f"mode {k + 1}")
+            ls, mk, lw = styles[k % len(styles)]
+            ax.plot(minutes, t.frequency_hz[:, k], ls=ls, marker=mk, ms=3, markevery=max(1, len(minutes) // 12),
+                    lw=lw, label=f"mode {k + 1}", zorder=3 + k)
         ax.set_ylabel("natural frequency [Hz]")
         ax.legend(fontsize=7, ncols=4, loc="upper left")
     if t.min_depth_m is not None:

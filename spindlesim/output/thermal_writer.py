@@ -173,6 +173,7 @@ def write_spindle_thermal(path: Path, run: RunInfo, model, study) -> Path:
         md = warm.minimum_depth
         if md is not None:
             c = f"{w}/chatter"
+            data[f"{c}/time_s"] = (np.array([s.time_s for s in warm.states]), "s", ("time_s",))
             data[f"{c}/min_limit_depth_m"] = Data(md.depth_m, "m", ("time_s",),
                                                    "smallest limit depth of cut over the chatter section's speeds, "
                                                    "the tool-point FRF of that instant", fill_nan=True)

@@ -261,8 +261,10 @@ def orbit_figure(res: TransientResult, operating: str = "") -> Figure:
     ax.set_aspect("equal", adjustable="datalim")
     for axis in (ax.xaxis, ax.yaxis):
         axis.set_major_locator(MaxNLocator(6))
-    ax.set_xlabel(f"x [{unit}] from the centre x = {centre[0] * UM:.4g} um")
-    ax.set_ylabel(f"y [{unit}] from the centre y = {centre[1] * UM:.4g} um")
+    # the centre in a unit of its own size, said once per axis (the orbit's unit is the axis')
+    for set_label, name, c in ((ax.set_xlabel, "x", centre[0]), (ax.set_ylabel, "y", centre[1])):
+        c_scale, c_unit = length_unit(abs(float(c)) or 1e-12)
+        set_label(f"{name} - {name}_centre [{unit}]   ({name}_centre = {float(c) / c_scale:.4g} {c_unit})")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, loc="upper right")
     if note:

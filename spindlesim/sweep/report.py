@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 
 from ..output.figures import new_figure, save_figure
-from ..output.hdf5 import RunInfo, write_h5
-from .runner import DONE, FAILED, INCOMPLETE, INTERRUPTED, NOT_RUN, SweepResult
+from ..output.hdf5 import Data, RunInfo, write_h5
+from .runner import verdict_word, DONE, FAILED, INCOMPLETE, INTERRUPTED, NOT_RUN, SweepResult
 from .summary import OVERLAYS, is_bookkeeping, key_order, unit_from_name
 
 #: SI unit -> (from magnitude, divide by, unit shown): the first row whose magnitude the largest value reaches
@@ -19,10 +19,12 @@ _DISPLAY = {"m": ((1.0, 1.0, "m"), (1e-3, 1e-3, "mm"), (1e-6, 1e-6, "um"), (0.0,
             "m/N": ((1e-6, 1e-6, "um/N"), (0.0, 1e-9, "nm/N")), "m^2": ((1.0, 1.0, "m^2"), (0.0, 1e-6, "mm^2"))}
 
 
-def _column(values: list, unit: str) -> tuple[np.ndarray, str]:
+def _column(values: list, unit: str):
     if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
         return np.asarray(values, float), unit or "deck units"
-    return np.array([str(v) for v in values], dtype=object), "1"
+    # a matrix or a word: the values as the deck writes them, in the unit its key names
+    return Data(np.array([str(v) for v in values], dtype=object), unit or "1", None,
+                "the values as written in the deck (text)")
 
 
 def scalar_table(res: SweepResult) -> dict[str, np.ndarray]:
@@ -166,6 +168,12 @@ def scalars_figure(res: SweepResult, max_panels: int = 6, title: str = ""):
             order = np.argsort(x)
             label = ", ".join(f"{short_name(o)}={v}" for o, v in zip(others, g)) or None
             ax.plot(x[order], table[key][idx][order] / scale, "o-", label=label)
+            flagged = [i for i in idx if verdict_word(res.records[i]) not in ("", "ok")]
+            if flagged:  # a case whose verdict fails or warns: a red ring around its point
+                fx = np.array([res.cases[i].parameters[xs_name] for i in flagged], float)
+                ax.plot(fx, table[key][flagged] / scale, "o", ms=11, mfc="none", mec="tab:red", mew=1.4,
+                        label="verdict: " + ", ".join(sorted({verdict_word(res.records[i]) for i in flagged}))
+                        if ax is axes[0] and g == next(iter(groups)) else None)
         missing = sum(r.get("status") == DONE and not np.isfinite(v) for r, v in zip(res.records, table[key]))
         if missing:  # e.g. no converged contact pressure at a sharp roller edge
             ax.text(0.01, 0.95, f"no value in {missing} finished case(s)", transform=ax.transAxes, fontsize=7,
@@ -179,7 +187,7 @@ def scalars_figure(res: SweepResult, max_panels: int = 6, title: str = ""):
         ax.set_ylabel(_scalar_label(key, unit), fontsize=8)
         ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, alpha=0.3)
-    if others:
+    if others or any(verdict_word(r) not in ("", "ok") for r in res.records):
         axes[0].legend(fontsize=7)
     x_unit = unit_from_name(xs_name)
     axes[-1].set_xlabel(short_name(xs_name) + (f" [{x_unit}]" if x_unit else "") + f"   ({xs_name})")
@@ -233,6 +241,7 @@ def summary_table(res: SweepResult, max_scalars: int = 3) -> tuple[list[str], di
     params = list(res.cases[0].parameters)
     head = ["case"] + [short_name(p) + (f" [{unit_from_name(p)}]" if unit_from_name(p) else "") for p in params]
     head.append("status")
+    verdicts = [verdict_word(r) for r in res.records]
     scales = {}
     for k in shown:
         scales[k] = display_scale(table[k], units.get(k, ""))
@@ -244,8 +253,10 @@ def summary_table(res: SweepResult, max_scalars: int = 3) -> tuple[list[str], di
         row += [_cell(table[k][i], scales[k][0]) for k in shown]
         rows.append(row)
         data.append({"case": c.index, "key": c.key, "parameters": c.parameters, "status": r.get("status", ""),
-                     "scalars": {k: (float(table[k][i]) if np.isfinite(table[k][i]) else None) for k in shown}})
+                     "scalars": {k: (float(table[k][i]) if np.isfinite(table[k][i]) else None) for k in shown},
+                     "verdicts": r.get("verdicts", [])})
     widths = [max(len(h), *(len(r[j]) for r in rows)) for j, h in enumerate(head)]
-    lines = ["  ".join(h.rjust(w) for h, w in zip(head, widths))]
-    lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]
+    lines = ["  ".join(h.rjust(w) for h, w in zip(head, widths)) + ("  verdict" if any(verdicts) else "")]
+    lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) + (f"  {vd}" if any(verdicts) else "")
+              for r, vd in zip(rows, verdicts)]
     return lines, {"cases": data, "units": {k: units.get(k, "") for k in shown}}

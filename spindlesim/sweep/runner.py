@@ -88,6 +88,22 @@ def _without_plots(paths: list, options: dict) -> list:
     return keep
 
 
+def case_verdicts(paths, deck) -> list[dict[str, str]]:
+    """The verdicts a case's files hold (``output.verdicts``), as JSON: topic, text, status."""
+    from ..output.verdicts import operating_range, verdicts
+
+    return [{"topic": v.topic, "text": v.text, "status": v.status}
+            for v in verdicts(paths, operating=operating_range(deck))]
+
+
+def verdict_word(record: dict[str, Any]) -> str:
+    """A case's verdicts in a few words: "ok", or the topics that fail ("NOT MET") or warn, with their first words."""
+    flagged = [v for v in record.get("verdicts", ()) if v.get("status") in ("bad", "warn")]
+    if not flagged:
+        return "ok" if record.get("verdicts") else ""
+    return "; ".join(f"{v['topic']}: {v['text'].split(':')[0]}" for v in flagged)
+
+
 def run_case(case: Case, case_dir: str) -> dict[str, Any]:
     """Run one case (in a worker process); returns its record, also written as case.json.
 
@@ -115,7 +131,8 @@ def run_case(case: Case, case_dir: str) -> dict[str, Any]:
                           error="incomplete output: " + ", ".join(p.name for p in bad))
         else:
             scalars, units = case_results(paths)
-            record.update(status=DONE, files=_relative(paths, out), scalars=scalars, units=units)
+            record.update(status=DONE, files=_relative(paths, out), scalars=scalars, units=units,
+                          verdicts=case_verdicts(paths, loaded.deck))
     except IncompleteRun as exc:
         record.update(status=INTERRUPTED if exc.interrupted else INCOMPLETE, error=exc.reason,
                       files=_relative(exc.paths, out))

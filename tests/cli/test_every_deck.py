@@ -15,6 +15,7 @@ import pytest
 from click.testing import CliRunner
 
 from spindlesim.cli import main
+from tests.units import unit_problems
 
 ROOT = Path(__file__).parents[2]
 DECKS = ROOT / "decks"
@@ -149,6 +150,8 @@ def test_every_command_on_every_deck_finishes_with_every_promised_dataset(deck, 
     res = CliRunner().invoke(main, args + SHORT.get(command, []))
     assert res.exit_code == 0, res.output
     _check_file(tmp_path / "out" / f"{command}.h5", command)
+    for h5 in (tmp_path / "out").glob("*.h5"):  # every dataset has a unit, the one its name says (issue 33)
+        assert not unit_problems(h5), unit_problems(h5)
     assert list((tmp_path / "out").glob("*.png")), "no figure"
     assert not list((tmp_path / "out").glob("*.tmp*"))
 

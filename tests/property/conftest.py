@@ -18,6 +18,6 @@ _COMMON = dict(deadline=None, database=None, print_blob=True,
                suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                       HealthCheck.filter_too_much])
 settings.register_profile("ci", max_examples=100, derandomize=True, **_COMMON)
-settings.register_profile("fuzz", max_examples=2000, **_COMMON)
-settings.register_profile("long", max_examples=20000, **_COMMON)
+settings.register_profile("fuzz", max_examples=20000, **_COMMON)
+settings.register_profile("long", max_examples=200000, **_COMMON)
 settings.load_profile(os.environ.get("SPINDLESIM_FUZZ", "ci") or "ci")

@@ -12,6 +12,8 @@ from __future__ import annotations
 import tempfile
 from pathlib import Path
 
+import yaml
+
 import pytest
 from click.testing import CliRunner
 from hypothesis import example, given, settings
@@ -19,7 +21,7 @@ from hypothesis import strategies as st
 
 from spindlesim.cli import main
 
-from .decks import (BOMB, NUMBER_MUTATIONS, TEXTS, assert_located, check_load, check_run, mutated_deck,
+from .decks import (BOMB, NUMBER_MUTATIONS, ROOT, TEXTS, assert_located, check_load, check_run, mutated_deck,
                     schema_deck, text_mutated_deck)
 
 #: share of the profile's examples for the tests that run analyses (up to a few seconds each)
@@ -87,3 +89,76 @@ def test_command_line_exit_code_is_0_1_or_2_with_a_message(content, command):
 def test_every_example_deck_loads(name):
     """The mutations start from valid decks: each example loads as it is."""
     assert check_load(TEXTS[name], name) is not None
+
+
+# --- issue 33, item 1: the defect kinds the fuzzer found last round, each a property of its own ---
+
+@given(st.sampled_from(["title", "shaft", "bearings", "x"]), st.sampled_from(["\n", "\t", "\r", "\x0b", " "]),
+       st.booleans())
+@example("title", "\n", True)
+def test_a_key_with_a_control_character_is_shown_escaped_on_one_line(key, char, at_end):
+    odd = key + char if at_end else char + key
+    text = f"{yaml.safe_dump({odd: 1}).strip()}\ntitle: t\n"
+    loaded = check_load(text)
+    if loaded is None:  # refused: check_load verified every issue is located; each is one line
+        from spindlesim.deck import DeckError, parse_deck
+
+        try:
+            parse_deck(text, "fuzz.yaml")
+        except DeckError as exc:
+            for issue in exc.issues:
+                assert "\n" not in str(issue) and "\r" not in str(issue), repr(str(issue))
+
+
+@given(st.sampled_from(["outer_dia_mm", "length_mm"]),
+       st.floats(min_value=1e-300, max_value=9.9e-4, allow_subnormal=False))
+@example("outer_dia_mm", 1e-300)
+@example("length_mm", 1e-300)
+def test_a_vanishing_element_is_a_deck_error_and_no_warning_escapes(column, value):
+    text = TEXTS["decks/seed003_spindle_linear.yaml"]
+    row = "- [52.6, 22.0, 28.0,"
+    assert row in text
+    new = {"outer_dia_mm": f"- [{value!r}, 0.0, 28.0,", "length_mm": f"- [52.6, 22.0, {value!r},"}[column]
+    with tempfile.TemporaryDirectory() as tmp:
+        deck = Path(tmp) / "deck.yaml"
+        deck.write_text(text.replace(row, new, 1))
+        result = CliRunner().invoke(main, ["static", str(deck), "-o", str(Path(tmp) / "out")])
+    assert result.exit_code == 2, result.output
+    assert "Warning" not in result.output and "RuntimeWarning" not in result.output, result.output
+    assert "the smallest a beam element may be" in result.output
+
+
+@given(st.sampled_from(["dir", "socket", "fifo"]))
+def test_a_deck_path_that_is_not_a_file_is_one_located_line(kind):
+    import os
+    import socket
+
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "deck"
+        if kind == "dir":
+            path.mkdir()
+        elif kind == "socket":
+            s = socket.socket(socket.AF_UNIX)
+            s.bind(str(path))
+            s.close()
+        else:
+            os.mkfifo(path)
+        result = CliRunner().invoke(main, ["modal", str(path), "-o", str(Path(tmp) / "out")])
+    assert result.exit_code == 2, result.output
+    lines = [ln for ln in result.output.splitlines() if ln.startswith(str(path))]
+    assert len(lines) == 1 and "Usage" not in result.output, result.output
+    assert_located(lines[0])
+
+
+@_fewer(0.1)
+@given(st.floats(min_value=1.01e10, max_value=1.7e308, allow_subnormal=False) | st.just(float("inf")))
+@example(1.8e308)
+def test_a_sweep_value_outside_its_keys_range_stops_every_case_before_one_runs(value):
+    with tempfile.TemporaryDirectory() as tmp:
+        deck = ROOT / "decks" / "studies" / "seed001_crowning.yaml"
+        out = Path(tmp) / "out"
+        result = CliRunner().invoke(main, ["sweep", str(deck), "--set",
+                                           f"bearings.dtrb.geometry.crown_radius_mm=1300,{value!r}", "-o", str(out)])
+        assert result.exit_code == 2, result.output
+        assert "crown_radius_mm" in result.output
+        assert not (out / "cases").exists()

@@ -111,6 +111,10 @@ def test_failing_case_is_recorded_and_others_finish(tmp_path):
     assert "singular" in err[0]
     rec = json.loads(next(p for p in tmp_path.glob("cases/*/case.json") if "failed" in p.read_text()).read_text())
     assert rec["parameters"]["bearings.front.K_N_m"] == [[0, 0], [0, 0]]
+    # matrices as text, in the unit their key names (issue 33, item 2)
+    from tests.units import unit_problems
+
+    assert not unit_problems(tmp_path / "sweep.h5")
 
 
 def test_bad_override_is_a_deck_error(tmp_path):

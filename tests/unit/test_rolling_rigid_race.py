@@ -54,7 +54,7 @@ def test_compiled_force_equals_numpy():
     c = b.compiled()
     out = np.zeros(2)
     for q, t in ((np.array([1e-6, -2e-6]), 1.3e-3), (np.array([-3e-7, 1e-7]), 4.1e-2)):
-        rigid_race_kernel.force(c.floats, 0, c.ints, 0, q, t, 523.6, 523.6 * t, out)
+        rigid_race_kernel.force(c.floats, 0, c.ints, 0, q, np.zeros(2), t, 523.6, 523.6 * t, out)
         ref = b.force_and_tangent(q, np.zeros(2), t, 523.6)[0]
         assert out == pytest.approx(ref, rel=1e-13, abs=1e-12)
 

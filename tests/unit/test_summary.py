@@ -140,9 +140,7 @@ def test_a_spectral_line_is_printed_to_its_resolution(value, half, expect):
 def test_static_summary_prints_no_round_off(tmp_path):
     out = _run(tmp_path, "static", str(DECKS / "seed001_dtrb_rotor.yaml"))  # old: x 4.442e-14 um, reaction 3.229e-12, -0
     rows = [ln for ln in out.splitlines() if ("reaction" in ln or "deflection" in ln) and not ln.endswith(".png")]
-    # the deflection, two bearings' reactions, and one line for the two damping-only entries (issue 35, item 6)
-    assert len(rows) == 4
-    assert "acbb_damping, dtrb_damping: damping only (no stiffness, no static reaction)" in out
+    assert len(rows) == 3  # the deflection and the two bearings (the damping-only `linear` entries are gone)
     for ln in rows:
         assert "e-1" not in ln and "-0," not in ln and not ln.rstrip(" N").endswith("-0"), ln
     assert "deflection there x 0 um, y 2.768 um" in out
@@ -154,18 +152,39 @@ def test_frf_summary_says_which_dof_responds_and_which_is_forced(tmp_path):
     assert "response at node 5 x / force at node 9 x, 3000 rpm" in out
 
 
+def _undamped_ball_sets(tmp_path) -> Path:
+    """decks/milling_spindle.yaml with its ball sets' damping off (C = 0, as before issue 30)."""
+    import yaml
+
+    d = yaml.safe_load((DECKS / "milling_spindle.yaml").read_text())
+    for b in d["bearings"]:
+        b["damping"] = {"stiffness_proportional_s": 0.0}
+    path = tmp_path / "undamped.yaml"
+    path.write_text(yaml.safe_dump(d))
+    return path
+
+
 def test_modal_damping_has_significant_digits(tmp_path):
-    out = _run(tmp_path, "modal", str(DECKS / "milling_spindle.yaml"), "--modes", "2")  # an axial mode, zeta 1.5e-05
+    out = _run(tmp_path / "a", "modal", str(DECKS / "milling_spindle.yaml"), "--modes", "2")
     rows = [ln.split() for ln in out.splitlines() if ln.strip()[:2].strip().isdigit() and "Hz" not in ln]
-    assert [r[2] for r in rows] == ["1.49e-05", "0.00889"]  # old: 0.0000, 0.0089
+    assert [r[2] for r in rows] == ["0.0106", "0.0108"]  # the axial mode: beta omega / 2 (1e-5 s, 339.5 Hz)
+    out = _run(tmp_path / "b", "modal", str(_undamped_ball_sets(tmp_path)), "--modes", "1")
+    rows = [ln.split() for ln in out.splitlines() if ln.strip()[:2].strip().isdigit() and "Hz" not in ln]
+    assert [r[2] for r in rows] == ["1.69e-06"]  # old: 0.0000; with the radial dampers of before, 1.49e-05
 
 
 def _unloaded_lathe(tmp_path) -> Path:
-    """decks/lathe_headstock.yaml without its thermal section, loads and gravity: a DTRB rotor whose axial mode has
-    no damping at all (the dampers act on x and y)."""
+    """decks/lathe_headstock.yaml without its thermal section, loads and gravity, and with its bearings' damping
+    replaced by radial dampers (`linear`, K = 0: the deck before issue 30): a DTRB rotor whose axial mode has no
+    damping at all."""
     import yaml
 
     d = yaml.safe_load((DECKS / "lathe_headstock.yaml").read_text())
+    for b in d["bearings"]:
+        b["damping"] = {"stiffness_proportional_s": 0.0}
+    d["bearings"] += [{"name": f"{b['name']}_damper", "node": b["node"], "type": "linear",
+                       "K_N_m": [[0.0, 0.0], [0.0, 0.0]], "C_Ns_m": [[c, 0.0], [0.0, c]]}
+                      for b, c in zip(list(d["bearings"]), (2000.0, 1000.0))]
     d.pop("spindle_thermal")
     d.pop("loads")
     d["operating"]["gravity"] = False

@@ -211,9 +211,12 @@ def test_a_linearized_is_the_tangent_of_the_reaction(family):
     if b.internal_mass.size == 0 and np.any(C_lin):
         v = np.zeros(n)
         hv = 1e-5 * max(W, 1.0) * np.max(np.abs(q[:2])) * np.ones(n)
-        C_d = differences(lambda vv: b.force(q, vv, 0.0, W, 0.0), v, hv)
+        # a rolling bearing's C (beta K, issue 30) is pitch-averaged like its K: so are the differences
+        angles = [0.0] if ref == "static" else pitch_points(b, W)
+        C_d = np.mean([differences(lambda vv, a=a: b.force(q, vv, 0.0, W, a), v, hv) for a in angles], axis=0)
         err_C = np.max(np.abs(C_lin - C_d)) / np.max(np.abs(C_d))
-        assert err_C <= 1e-5, f"{family}: |C_lin - C_diff| = {err_C:.3g} of max|C|"  # measured <= 6e-11
+        # measured: linear and fluid films <= 6e-11 (the rolling bearings pass at the tolerance of their K)
+        assert err_C <= 1e-5, f"{family}: |C_lin - C_diff| = {err_C:.3g} of max|C|"
 
 
 # ---- (b) static = start of the transient ---------------------------------------------------------------

@@ -24,8 +24,8 @@ def _run(tmp_path, *args):
 
 
 def test_milling_spindle_axial_crossing_is_in_the_campbell_summary(tmp_path):
-    """The axial mode (log dec ~4e-5) crosses 1x near 22,100 rpm (issue 21: the summary said "no
-    critical speed").  Independent check: the damped modes solved at the reported speed have the axial
+    """The axial mode (zeta 1.15 % there since issue 30's bearing damping; 1e-5 before) crosses 1x near 22,100 rpm
+    (issue 21: the summary said "no critical speed").  Independent check: the damped modes solved at the reported speed have the axial
     mode at N/60, and its damping gives the reported AF = 1/(2 zeta)."""
     deck = DECKS / "milling_spindle.yaml"
     out = _run(tmp_path, "campbell", str(deck), "--speeds", "20000:24000:9")
@@ -38,7 +38,7 @@ def test_milling_spindle_axial_crossing_is_in_the_campbell_summary(tmp_path):
     k = list(m.whirl).index("axial")
     assert m.frequency_hz[k] == pytest.approx(c["speed_rpm"] / 60, rel=1e-3)
     assert c["amplification_factor"] == pytest.approx(1 / (2 * m.damping_ratio[k]), rel=0.05)
-    assert c["amplification_factor"] > 1e4 and c["critical"]
+    assert 30 < c["amplification_factor"] < 60 and c["critical"]  # 1 / (2 zeta) = 43 (5.0e4 with C = 0)
     assert any(cs["speed_rpm"] == c["speed_rpm"] for cs in s["critical_speeds"])
     row = [ln for ln in out.splitlines() if f"{c['speed_rpm']:.0f}" in ln and "axial" in ln and " 1x " in ln]
     assert row and f"{c['amplification_factor']:.3g}" in row[0]

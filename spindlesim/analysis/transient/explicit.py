@@ -94,6 +94,10 @@ def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, t
         try:
             rows, status, pdone = k.rk4(y, a * s * h, h, (b - a) * s, s, samples[a + 1:b + 1], targets, pstates,
                                         pdone, FL, IN, hs)
+            if status == 0:
+                done = b
+                if progress is not None:  # a Ctrl-C while the progress is shown stops here too, not outside
+                    progress(b / plan.n_samples, b * s * h)
         except KeyboardInterrupt:
             complete, reason = False, f"interrupted by the user at t = {done * s * h:.6g} s"
             break
@@ -102,9 +106,6 @@ def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, t
             complete, reason = False, (f"non-finite state between t = {done * s * h:.6g} and "
                                        f"{(done + 1) * s * h:.6g} s (RK4, h = {h:.4g} s; a smaller time step may help)")
             break
-        done = b
-        if progress is not None:
-            progress(b / plan.n_samples, b * s * h)
     n = done + 1
     Y = samples[:n]
     ok = np.all(np.isfinite(pstates), axis=1)

@@ -43,28 +43,34 @@ def integrate(system: RotorSystem, x0: np.ndarray, v0: np.ndarray, plan: Plan, t
     ts, ys, pts, pys = [grid[:1]], [y[None, :]], [], []
     complete, reason = True, ""
     for i, (ta, tb) in enumerate(zip(edges[:-1], edges[1:])):
-        try:
+        try:  # the chunk, its samples and the progress line: a Ctrl-C anywhere in them ends here
             sol = solve_ivp(rhs, (ta, tb), y, method=method, rtol=rtol, atol=atol, dense_output=True)
+            if sol.status != 0 or not np.all(np.isfinite(sol.y)):
+                complete, reason = False, f"{method} stopped in [{ta:.6g}, {tb:.6g}] s: {sol.message}"
+                break
+            sel = (grid > ta) & (grid <= tb * (1 + 1e-12))
+            psel = (targets > ta - 1e-15) & (targets <= tb)
+            if i > 0:
+                psel &= targets > ta
+            got = (grid[sel], sol.sol(grid[sel]).T if sel.any() else None,
+                   targets[psel], sol.sol(targets[psel]).T if psel.any() else None)
         except KeyboardInterrupt:
             complete, reason = False, f"interrupted by the user at t = {ta:.6g} s"
             break
         except (ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:
             complete, reason = False, f"integration failed at t = {ta:.6g} s: {exc}"
             break
-        if sol.status != 0 or not np.all(np.isfinite(sol.y)):
-            complete, reason = False, f"{method} stopped in [{ta:.6g}, {tb:.6g}] s: {sol.message}"
-            break
-        sel = (grid > ta) & (grid <= tb * (1 + 1e-12))
-        if sel.any():
-            ts.append(grid[sel]); ys.append(sol.sol(grid[sel]).T)
-        psel = (targets > ta - 1e-15) & (targets <= tb)
-        if i > 0:
-            psel &= targets > ta
-        if psel.any():
-            pts.append(targets[psel]); pys.append(sol.sol(targets[psel]).T)
+        if got[1] is not None:
+            ts.append(got[0]); ys.append(got[1])
+        if got[3] is not None:
+            pts.append(got[2]); pys.append(got[3])
         y = sol.y[:, -1].copy()
-        if progress is not None:
-            progress(tb / T, tb)
+        try:
+            if progress is not None:
+                progress(tb / T, tb)
+        except KeyboardInterrupt:
+            complete, reason = False, f"interrupted by the user at t = {tb:.6g} s"
+            break
     t_out = np.concatenate(ts)
     Y = np.concatenate(ys)
     PT = np.concatenate(pts) if pts else np.zeros(0)

@@ -2,8 +2,10 @@
 
 The bearing contract (``spindlesim.bearings.base``): q = (x, y, z, theta_x, theta_y) of the inner
 ring (the shaft node) measured from the bearing centre; f the force and moment ON THE SHAFT;
-K_t = -df/dq exact (implicit-function Jacobian through every ball equilibrium, :mod:`.kernel`);
-C_t = 0 (no damping model).  Outer rings fixed, inner ring turning at ``speed``.
+K_t = -df/dq of the elastic reaction exact (implicit-function Jacobian through every ball equilibrium,
+:mod:`.kernel`); damping C = beta K (``damping_s``, :mod:`..damping`): ``linearized`` returns C = beta K,
+``force_and_tangent`` adds -beta K_t v to f with C_t = beta K_t.  Outer rings fixed, inner ring turning at
+``speed``.
 
 Inner-ring kinematics at ball j of row k (azimuth psi, row at z_k, thrust direction s_k; small
 displacements, Jones 1960; Harris and Kotzalas 2007, *Advanced Concepts*, ch. 1 and 3): the inner
@@ -49,6 +51,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..base import FIVE, BearingBase, shaft_angle
+from ..damping import check_beta, damped
 from . import checks, floating
 from . import equilibrium as eq
 from . import kernel as kn
@@ -138,7 +141,7 @@ class BallBearing(BearingBase):
     def __init__(self, geometry: BallGeometry, preload: Preload = Preload(), *, name: str = "ball", node: int = 0,
                  model: str = "outer_race_control", rating: RatingInputs = RatingInputs(), pitch_samples: int = 4,
                  speed_growth=None, growth=None, shoulders: checks.Shoulders | None = None, race=None,
-                 made=None):
+                 made=None, damping_s: float = 0.0, damping_held=None):
         if model not in MODELS:
             raise ValueError(f"model must be one of {MODELS}, not {model!r}")
         if race is not None and np.shape(race) != (geometry.rows, geometry.balls):
@@ -166,6 +169,10 @@ class BallBearing(BearingBase):
         self.model = model if race is None else _race_label(self.race)
         self.rating = rating
         self.pitch_samples = int(pitch_samples)
+        #: beta [s] of the damping C = beta K (:mod:`..damping`; 0: none, the contact model alone)
+        self.damping_s = check_beta(damping_s)
+        #: the damping matrix held for a time integration (``at_operating_point(..., transient=True)``), or None
+        self.damping_held = None if damping_held is None else np.array(damping_held, float).reshape(5, 5)
         #: callable speed [rad/s] -> radial growth of the inner groove centre beyond rest [m] (None: rings rigid
         #: against speed); ``growth``: what the bearing's temperatures and fits changed (reporting only)
         self.speed_growth = speed_growth
@@ -225,7 +232,8 @@ class BallBearing(BearingBase):
     def _copy(self, **kw) -> "BallBearing":
         args = dict(preload=self.preload, name=self.name, node=self.node, model=self._base_model(),
                     rating=self.rating, pitch_samples=self.pitch_samples, speed_growth=self.speed_growth,
-                    growth=self.growth, shoulders=self.shoulders, race=self._race_given, made=self.made)
+                    growth=self.growth, shoulders=self.shoulders, race=self._race_given, made=self.made,
+                    damping_s=self.damping_s, damping_held=self.damping_held)
         args.update(kw)
         geometry = args.pop("geometry", self.geometry)
         return BallBearing(geometry, **args)
@@ -314,15 +322,18 @@ class BallBearing(BearingBase):
 
     # ---- the contract ---------------------------------------------------------------------------
     def force_and_tangent(self, q, v, t, speed, angle=None):
-        """(f, K_t, C_t) on (x, y, z, theta_x, theta_y); C_t = 0."""
+        """(f, K_t, C_t) on (x, y, z, theta_x, theta_y): the elastic reaction with the damping force -beta K_t v,
+        its tangent K_t and C_t = beta K_t (:mod:`..damping`)."""
         qq = np.asarray(q, float)
         ev = self._evaluate(qq, float(speed), self.cage_angle(shaft_angle(speed, t, angle)))
-        return ev.f.copy(), ev.K.copy(), np.zeros((5, 5))
+        vv = np.zeros(5) if v is None else np.asarray(v, float)[:5]
+        f, C = damped(ev.f.copy(), ev.K.copy(), vv, self.damping_s, self.damping_held)
+        return f, ev.K.copy(), C
 
     def linearized(self, speed, static_load=None, start=None):
         """(K, C) at the equilibrium under ``static_load`` (5 entries; None = 0), K averaged over
         ``pitch_samples`` cage positions within one ball pitch, the first from ``start`` (the contract's;
-        default the unloaded ring), each next from the one before; C = 0."""
+        default the unloaded ring), each next from the one before; C = beta K (``damping_s``)."""
         load = _five(static_load)
         pitch = 2.0 * math.pi / self.geometry.balls
         K, work = np.zeros((5, 5)), Work(self)
@@ -331,7 +342,15 @@ class BallBearing(BearingBase):
             if m:
                 q, ev, _ = self._equilibrium(load, float(speed), m * pitch / self.pitch_samples, q, work=work)
             K += ev.K
-        return K / self.pitch_samples, np.zeros((5, 5))
+        K = K / self.pitch_samples
+        return K, self.damping_s * K
+
+    def at_operating_point(self, speed, static_load=None, transient=False) -> "BallBearing":
+        """For a time integration: the bearing with its damping held at beta K of the operating point
+        (:mod:`..damping`); otherwise itself."""
+        if not transient or self.damping_s == 0.0:
+            return self
+        return self._copy(damping_held=self.linearized(speed, static_load)[1])
 
     def static_displacement(self, speed, static_load=None, start=None) -> np.ndarray:
         """Inner-ring displacement carrying ``static_load`` at cage angle 0, from ``start`` (the contract)."""

@@ -72,7 +72,9 @@ def plot_load_distribution(state: BallState, title: str | None = None) -> Figure
                      f"{_deg(a_i.min())} to {_deg(a_i.max())} deg, alpha_o {_deg(a_o.min())} to {_deg(a_o.max())} deg",
                      fontsize=8)
         ax.tick_params(labelsize=7)
-        ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=7)
+    # one legend under the panels, inside the figure (constrained layout makes room for it)
+    fig.legend(*fig.axes[0].get_legend_handles_labels(), loc="outside lower center", ncols=2, fontsize=8,
+               title="each row in its colour", title_fontsize=7)
     fig.suptitle("Ball contact loads [N] against azimuth (x at 0 deg)\n" + title.replace("; ", ";\n", 1), fontsize=9)
     return fig
 

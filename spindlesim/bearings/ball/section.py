@@ -29,6 +29,7 @@ Rotor deck entry (``bearings:`` list), 5 DOF at its node::
       temperatures_C: {inner_ring: 40, outer_ring: 30, rolling_elements: 35, reference: 20}
       fits_um: {shaft: 3.0, housing: -2.0}                      # diametral; needs mounting
       mounting: {bore_mm: 70, outer_diameter_mm: 110, shaft_bore_mm: 30}
+      damping: {stiffness_proportional_s: 1.0e-5}   # C = beta K (the default; 0: undamped)
 
 ``preload``: ``position`` - ``axial_um`` is the total axial approach clamping imposes on the set
 beyond first contact (catalogue preload offset), half of it taken by each opposed group; needs
@@ -63,6 +64,7 @@ from typing import Annotated, Literal, Optional, Union
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Load5, NodeNumber, NonNegFloat, PositiveFloat, Range
+from ..damping import RollingDamping
 from .section_thermal import (BallFits, BallMaterial, BallMounting, BallTemperatures, growth_checks,  # noqa: F401
                               thermal_inputs)
 
@@ -216,11 +218,14 @@ class BallBearingEntry(_BallKeys):
 
     type: Literal["ball"]
     """Bearing type: ball (angular-contact or deep-groove ball bearing, single row or matched set; 5 DOF at its
-    node, no damping model)."""
+    node, damped by `damping`)."""
     name: str
     """Bearing name, unique in the deck (output groups, sweep paths)."""
     node: NodeNumber
     """Shaft node of the bearing (1-based); the rows sit about it."""
+    damping: RollingDamping = RollingDamping()
+    """Damping of the set: C = beta K on its 5 x 5 tangent stiffness (x, y, z, tilts), beta
+    `stiffness_proportional_s` (default 1.0e-5 s; 0: undamped)."""
 
 
 class LoadSweep(DeckModel):
@@ -477,7 +482,8 @@ def build(entry: _BallKeys):
         model="outer_race_control" if entry.model == "auto" else entry.model,
         rating=RatingInputs(dynamic_load_rating_N=entry.dynamic_load_rating_N,
                             reliability_percent=entry.reliability_percent),
-        speed_growth=speed_growth, growth=growth, made=made_as)
+        speed_growth=speed_growth, growth=growth, made=made_as,
+        damping_s=entry.damping.stiffness_proportional_s if isinstance(entry, BallBearingEntry) else 0.0)
 
 
 def _made_as(entry: _BallKeys, geometry, preload):

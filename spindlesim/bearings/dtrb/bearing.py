@@ -18,6 +18,7 @@ from typing import Sequence
 import numpy as np
 
 from ..base import FIVE, RADIAL, BearingBase, shaft_angle
+from ..damping import check_beta, damped
 from ..statics import damped_newton
 from .geometry import DtrbGeometry
 from .reactions import azimuths, projection, reaction_from, ring_motion, stiffness_from
@@ -40,8 +41,12 @@ class DtrbBearing(BearingBase):
     def __init__(self, geometry: DtrbGeometry, preload_m: float = 0.0, *, name: str = "dtrb", node: int = 0,
                  axial_load_N: float = 0.0, row_offset_rad: Sequence[float] = (0.0, 0.0),
                  dof_names: Sequence[str] = DOFS_2, held: Sequence[float] = (0.0, 0.0, 0.0), body=None,
-                 made_preload_m: float | None = None):
+                 made_preload_m: float | None = None, damping_s: float = 0.0, damping_held=None):
         self.geometry = geometry
+        #: beta [s] of the damping C = beta K (``bearings.damping``; 0: none, the contact model alone)
+        self.damping_s = check_beta(damping_s)
+        #: the damping matrix held for a time integration (``at_operating_point(..., transient=True)``), or None
+        self.damping_held = None if damping_held is None else np.array(damping_held, float)
         self.preload_m = float(preload_m)
         #: rings' and rollers' ``thermal.growth.ThermoElastic`` (None: bearing steel) and delta0 as assembled
         #: (cold; None: ``preload_m``), the start of :meth:`at_temperatures`
@@ -65,7 +70,8 @@ class DtrbBearing(BearingBase):
         cold assembly's delta0 when this preload is that of a temperature, else the new preload itself)."""
         return DtrbBearing(self.geometry, preload_m, name=self.name, node=self.node,
                            axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
-                           dof_names=self.dof_names, held=held, body=self.body, made_preload_m=made_preload_m)
+                           dof_names=self.dof_names, held=held, body=self.body, made_preload_m=made_preload_m,
+                           damping_s=self.damping_s)
 
     def at_temperatures(self, temperatures) -> "DtrbBearing":
         """This bearing with the preload delta0 its parts' growth at ``temperatures``
@@ -200,7 +206,8 @@ class DtrbBearing(BearingBase):
         return load
 
     def linearized(self, speed: float, static_load: np.ndarray | None = None, start=None):
-        """Contract: K at the load equilibrium on ``dof_names`` (solved from d = 0, not ``start``), C = 0.
+        """Contract: K at the load equilibrium on ``dof_names`` (solved from d = 0, not ``start``), C = beta K
+        (``damping_s``).
 
         With ``dof_names`` (x, y) K is the (X, Y) block of the 5x5 stiffness: the axial load is
         the deck's, and axial motion and tilt stay at their equilibrium values (held, see
@@ -208,7 +215,7 @@ class DtrbBearing(BearingBase):
         +Y as phiX, phiY)."""
         K = self.linearized_full(speed, self.full_load(static_load))
         n = len(self.dof_names)
-        return K[:n, :n].copy(), np.zeros((n, n))
+        return K[:n, :n].copy(), self.damping_s * K[:n, :n]
 
     def static_displacement(self, speed: float, static_load=None, start=None) -> np.ndarray:
         """Ring displacement at the equilibrium under the static (and the deck's axial) load (from d = 0, not
@@ -217,7 +224,8 @@ class DtrbBearing(BearingBase):
 
     def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "DtrbBearing":
         """A radial (x, y) bearing holds axial motion and tilt at the equilibrium under the static
-        load and the deck's axial load; a 5-DOF bearing has nothing to hold."""
+        load and the deck's axial load; a 5-DOF bearing has nothing to hold.  For a time integration the
+        damping is held too, at beta K of the operating point (``bearings.damping``)."""
         held = self._held
         if len(self.dof_names) != 5:
             held = self.solve(self.full_load(static_load), speed).displacement[2:]
@@ -225,22 +233,29 @@ class DtrbBearing(BearingBase):
             return TimeSteppedDtrb(self.geometry, self.preload_m, name=self.name, node=self.node,
                                    axial_load_N=self.axial_load_N, row_offset_rad=self.row_offset_rad,
                                    dof_names=self.dof_names, held=held, body=self.body,
-                                   made_preload_m=self.made_preload_m)
+                                   made_preload_m=self.made_preload_m, damping_s=self.damping_s,
+                                   damping_held=self.linearized(speed, static_load)[1] if self.damping_s else None)
         return self if len(self.dof_names) == 5 else self.with_preload(self.preload_m, held=held,
                                                                        made_preload_m=self.made_preload_m)
 
     def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
-        """Contract: (force on the shaft, K_t = -df/dq, C_t = 0) on ``dof_names`` at the node
+        """Contract: (force on the shaft, K_t, C_t = beta K_t) on ``dof_names`` at the node
         displacement q, roller azimuths advanced by the cage angle (eq. 3: cage ratio times the
-        shaft angle).  The rollers' Newton starts from its built-in guess (no call history: a warm
+        shaft angle); the force carries the damping force -beta K_t v (``bearings.damping``), K_t is the tangent
+        of the elastic reaction.  The rollers' Newton starts from its built-in guess (no call history: a warm
         start is passed to :meth:`reaction_and_stiffness`)."""
         q = np.asarray(q, float)
         d = np.zeros(5)
         d[2:] = self._held
         d[: q.size] = q
         F, K, _ = self.reaction_and_stiffness(d, speed, shaft_angle(speed, t, angle))
-        n = q.size
-        return F[:n], K[:n, :n], np.zeros((n, n))
+        return self._damped(F, K, q.size, v)
+
+    def _damped(self, F, K, n: int, v):
+        """(f, K_t, C_t) on the first n DOFs with the damping force of C = beta K_t."""
+        vv = np.zeros(n) if v is None else np.asarray(v, float)[:n]
+        f, C = damped(F[:n].copy(), K[:n, :n].copy(), vv, self.damping_s, self.damping_held)
+        return f, K[:n, :n].copy(), C
 
     def frequencies_hz(self, speed: float) -> dict[str, float]:
         """Cage and roller-pass (outer race) frequencies at shaft speed [rad/s]."""
@@ -291,5 +306,4 @@ class TimeSteppedDtrb(DtrbBearing):
         d[2:] = self._held
         d[: q.size] = q
         F, K, self._start = self.reaction_and_stiffness(d, speed, shaft_angle(speed, t, angle), self._start)
-        n = q.size
-        return F[:n], K[:n, :n], np.zeros((n, n))
+        return self._damped(F, K, q.size, v)

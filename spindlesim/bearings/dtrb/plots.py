@@ -72,11 +72,11 @@ def quiet_azimuth_deg(st: DtrbState) -> float:
 def plot_stiffness_sweep(sweep: DtrbSweep, components: Sequence[tuple[int, int, str]], x_scale: float,
                          x_label: str, title: str) -> Figure:
     """Direct stiffness terms over the swept parameter, with the number of loaded rollers per row."""
-    fig = _figure(5.0 * len(components), 4.0)
+    fig = _figure(5.0 * len(components), 4.6)
     x = sweep.values * x_scale
     for i, (a, b, name) in enumerate(components):
         ax = fig.add_subplot(1, len(components), i + 1)
-        ax.plot(x, sweep.stiffness[:, a, b] / 1e6, "k-", lw=1.6, label=name)
+        ax.plot(x, sweep.stiffness[:, a, b] / 1e6, "k-", marker="o", ms=2.5, lw=1.4, label=f"{name} (each point solved)")
         ax.set_xlabel(x_label)
         ax.set_ylabel(f"{name} [N/um]")
         ax.grid(True, alpha=0.3)
@@ -92,6 +92,8 @@ def plot_stiffness_sweep(sweep: DtrbSweep, components: Sequence[tuple[int, int, 
                        label="unloaded rollers present")
         h1, l1 = ax.get_legend_handles_labels()
         h2, l2 = tw.get_legend_handles_labels()
-        ax.legend(h1 + h2, l1 + l2, fontsize=7, loc="best")
+        # under the axes, never over the curves
+        ax.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncols=2,
+                  frameon=False)
     fig.suptitle(title, fontsize=10)
     return fig

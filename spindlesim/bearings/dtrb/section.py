@@ -26,7 +26,8 @@ model).  Top-level section (what ``spindlesim dtrb`` computes)::
 
 Bearing type for rotor decks (``bearings:`` list)::
 
-      - {type: dtrb, name: hub, node: 3, preload_um: 30, axial_load_N: 0, dofs: 5, geometry: {...as bearing above...}}
+      - {type: dtrb, name: hub, node: 3, preload_um: 30, axial_load_N: 0, dofs: 5, geometry: {...as bearing above...},
+         damping: {stiffness_proportional_s: 1.0e-5}}    # C = beta K (the default; 0: undamped)
 
 ``dofs: 5`` (default) couples the node's (x, y, z, theta_x, theta_y) and gives the rotor its axial
 DOF (seed 001's 5 DOF/node model); ``dofs: 2`` adds only the radial 2x2 block.
@@ -40,6 +41,7 @@ from typing import Annotated, Literal, Optional
 from pydantic import Field, model_validator
 
 from ...fields import AnyNumber, DeckModel, Load5, NodeNumber, PositiveFloat
+from ..damping import RollingDamping
 from ..temperatures import Expansion, PartTemperatures, body
 
 Count = Annotated[int, Field(ge=2, le=2000)]
@@ -167,6 +169,9 @@ class DtrbBearingEntry(DeckModel):
     dofs: Literal[2, 5] = 5  # 5: x, y, z, theta_x, theta_y (the rotor gets the axial DOF); 2: x, y only
     """5: the bearing couples x, y, z, theta_x, theta_y of its node and the rotor gets an axial DOF; 2: only its
     radial 2x2 block (x, y)."""
+    damping: RollingDamping = RollingDamping()
+    """Damping of the bearing: C = beta K on its tangent stiffness (5 x 5, or the radial 2 x 2 with `dofs: 2`),
+    beta `stiffness_proportional_s` (default 1.0e-5 s; 0: undamped)."""
 
 
 def geometry_from(spec: DtrbGeometrySpec):
@@ -195,7 +200,8 @@ def build(entry: DtrbBearingEntry):
 
     b = DtrbBearing(geometry_from(entry.geometry), 1e-6 * entry.preload_um, name=entry.name,
                     node=entry.node - 1, axial_load_N=entry.axial_load_N,
-                    dof_names=DOFS_5 if entry.dofs == 5 else DOFS_2, body=material_body(entry.geometry.material))
+                    dof_names=DOFS_5 if entry.dofs == 5 else DOFS_2, body=material_body(entry.geometry.material),
+                    damping_s=entry.damping.stiffness_proportional_s)
     return at_deck_temperatures(b, entry.temperatures_C)
 
 

@@ -100,6 +100,7 @@ def pressure_figure(result: FilmResult, title: str = "") -> Figure:
     ttl = title or "Film pressure"
     ax.set_title(f"{ttl}: e/Cb = {result.eccentricity_ratio:.3f}, attitude "
                  f"{result.attitude_angle_deg:.1f} deg, p_max {p.max():.3g} MPa")
-    ax.axvline(math.degrees(math.atan2(result.load_N[1], result.load_N[0])) % 360,
-               color="w", ls="--", lw=1)
+    load_deg = math.degrees(math.atan2(result.load_N[1], result.load_N[0])) % 360
+    ax.axvline(load_deg, color="w", ls="--", lw=1, label=f"direction of the shaft's load on the bearing ({load_deg:.0f} deg)")
+    ax.legend(loc="upper right", fontsize=8, framealpha=0.85)
     return fig

@@ -9,12 +9,13 @@ state, the recorded outputs and the parameters of the compiled force (``rigid_ra
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
 
 from ..base import BearingBase, CompiledForce, shaft_angle
+from ..damping import damped
 from ..statics import equilibrium_under_load
 from .flexible_race import FlexibleRace
 from .load_distribution import static_load_distribution
@@ -50,8 +51,18 @@ class RigidRaceBearing(RigidRace, BearingBase):
         return f, K
 
     def force_and_tangent(self, q, v=None, t: float = 0.0, speed: float = 0.0, angle=None):
-        f, K = self._at_angle(np.asarray(q, float), shaft_angle(speed, t, angle))
-        return f, K, np.zeros((2, 2))
+        """The contacts' reaction with the damping force -beta K_t v (``bearings.damping``); C_t = beta K_t."""
+        f, K = self._at_angle(np.asarray(q, float)[:2], shaft_angle(speed, t, angle))
+        vv = np.zeros(2) if v is None else np.asarray(v, float)[:2]
+        f, C = damped(f, K, vv, self.damping_s, self.damping_held)
+        return f, K, C
+
+    def at_operating_point(self, speed: float, static_load=None, transient: bool = False) -> "RigidRaceBearing":
+        """For a time integration: the bearing with its damping held at beta K of the operating point
+        (``bearings.damping``); otherwise itself."""
+        if not transient or self.damping_s == 0.0:
+            return self
+        return replace(self, damping_held=tuple(self.linearized(speed, static_load)[1].ravel()))
 
     def _pitch_angles(self) -> np.ndarray:
         """Shaft angles that move the cage evenly over one pitch (RIGID_RACE_PITCH_POINTS points)."""
@@ -81,15 +92,15 @@ class RigidRaceBearing(RigidRace, BearingBase):
         return equilibrium_under_load(self.pitch_average, W, q0, scale, self.name, max_step=scale)
 
     def linearized(self, speed: float, static_load=None, start=None) -> tuple[np.ndarray, np.ndarray]:
-        """The tangent at the static state averaged over one roller pitch; no damping."""
+        """The tangent at the static state averaged over one roller pitch; C = beta K (``damping_s``)."""
         _, K = self.pitch_average(self.static_displacement(speed, static_load))
-        return K, np.zeros((2, 2))
+        return K, self.damping_s * K
 
     def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
         a = shaft_angle(speed, t, angle)
         th, d = self.deflection_m(np.asarray(q, float)[:2], a)
         Q = self.stiffness * np.maximum(d, 0.0) ** self.exponent
-        return {"force": (-np.array([Q @ np.cos(th), Q @ np.sin(th)]), "N"), "roller_load_N": (Q, "N")}
+        return {"force": (self.force_and_tangent(q, v, t, speed, angle)[0], "N"), "roller_load_N": (Q, "N")}
 
     # the spindle's thermal model (contract: at_temperatures, heat) ------------
     def at_temperatures(self, temperatures) -> "RigidRaceBearing":
@@ -105,13 +116,16 @@ class RigidRaceBearing(RigidRace, BearingBase):
         return thermal.heat(self, speed, static_load, lubrication, lubricant_C, displacement)
 
     def compiled(self) -> CompiledForce:
-        """floats: [K, n, gamma0, cage ratio, spin ratio, cos base (N), sin base (N), waviness (4 per row)]."""
+        """floats: [K, n, gamma0, cage ratio, spin ratio, beta, held C (4, row-major), cos base (N), sin base
+        (N), waviness (4 per row)]: beta K_t v, or with a held C (``at_operating_point``) C v and beta 0."""
         base = self.phase_rad + 2.0 * np.pi * np.arange(self.rollers) / self.rollers
         wav = np.array([[SURFACE[w.surface], w.waves, w.amplitude_m, w.phase_rad] for w in self.waviness],
                        dtype=float).reshape(-1, 4)
         k = self.kinematics
-        floats = np.concatenate([[self.stiffness, self.exponent, self.radial_clearance_m, k.cage_ratio,
-                                  k.spin_ratio], np.cos(base), np.sin(base), wav.ravel()])
+        floats = np.concatenate([[self.stiffness, self.exponent, self.radial_clearance_m, k.cage_ratio, k.spin_ratio,
+                                  0.0 if self.damping_held is not None else self.damping_s],
+                                 np.zeros(4) if self.damping_held is None else np.asarray(self.damping_held, float),
+                                 np.cos(base), np.sin(base), wav.ravel()])
         return CompiledForce(RIGID_RACE_KIND, floats, np.array([self.rollers, len(self.waviness)], np.int64))
 
 
@@ -206,8 +220,18 @@ class FlexibleRaceBearing(FlexibleRace, BearingBase):
 
         return equilibrium_under_load(ft, W, np.zeros(self.n_pos), scale, self.name, tol=1e-8)
 
+    def _condensed_damping(self, q: np.ndarray, speed: float, angle: float) -> np.ndarray:
+        """Node damping of the contacts' own damping (seed 000 eq. 30: rollers and housing) at the state q, the
+        internal DOFs condensed quasi-statically: they follow the node as z = T x (T = -K_ii^+ K_in) and their
+        forces balance to first order in the frequency, so C = [I, L] C_t [I; T] with L = -K_ni K_ii^+."""
+        _, K, C = self.force_and_tangent(q, np.zeros_like(q), 0.0, speed, angle)
+        Kii_pinv = np.linalg.pinv(K[2:, 2:], rcond=1e-12)
+        T = np.vstack([np.eye(2), -Kii_pinv @ K[2:, :2]])
+        L = np.hstack([np.eye(2), -K[:2, 2:] @ Kii_pinv])
+        return L @ C @ T
+
     def linearized(self, speed: float, static_load=None, start=None) -> tuple[np.ndarray, np.ndarray]:
-        """The tangent of the pitch-averaged reaction at the static state; C = 0 (the contract).
+        """The tangent of the pitch-averaged reaction at the static state and the damping of its contacts.
 
         The node reaction with the rollers and race in equilibrium (condensed: their modes, ~100
         kHz, are quasi-static for a rotor) is averaged over FLEXIBLE_RACE_PITCH_POINTS cage positions of one
@@ -216,7 +240,10 @@ class FlexibleRaceBearing(FlexibleRace, BearingBase):
         tangents there: the derivative of the averaged reaction, as the rigid race's
         ``pitch_average``.  (Averaging the tangents of each cage position's own equilibrium
         instead differs by the variation of the equilibrium over the pitch: 12 % in K_xx for the
-        rotor of decks/validation/roller_rotor.yaml.)"""
+        rotor of decks/validation/roller_rotor.yaml.)  C: the damping the model's contacts carry (seed 000
+        eq. 30, rollers and housing; the transient integrates the same), condensed like K
+        (:meth:`_condensed_damping`) and averaged over the same cage positions; no stiffness-proportional
+        damping is added (``bearings.damping`` is for the models without damping of their own)."""
         W = np.zeros(2) if static_load is None else np.asarray(static_load, float)[:2]
         pitch = 2.0 * np.pi / self.rollers / self.kinematics.cage_ratio
         angles = pitch * np.arange(FLEXIBLE_RACE_PITCH_POINTS) / FLEXIBLE_RACE_PITCH_POINTS
@@ -240,7 +267,9 @@ class FlexibleRaceBearing(FlexibleRace, BearingBase):
         else:
             raise ArithmeticError(f"bearing {self.name!r}: the pitch-averaged reaction found no static state "
                                   f"(residual {np.max(np.abs(r)):.3g} N)")
-        return K, np.zeros((2, 2))
+        C = np.mean([self._condensed_damping(np.concatenate([qn, z]), speed, a) for a, z in zip(angles, internal)],
+                    axis=0)
+        return K, C
 
     def outputs(self, q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]:
         from . import flexible_race_kernel as kernel

@@ -11,7 +11,8 @@ cage ratio of seed 000 eq. 3, phi the shaft angle) and carries the Hertz force
 with n = 3/2 for a ball (point contact) and n = 10/9 for a roller (line contact, Palmgren),
 gamma_0 the radial internal clearance, and w_j the local sum of surface waviness of inner
 race, outer race and rolling element.  The force on the shaft is -sum_j Q_j (cos, sin)
-theta_j.  As the elements roll, the stiffness varies at the roller-pass frequency N f_cage
+theta_j, minus the damping force beta K_t v of ``damping_s`` (``bearings.damping``: C = beta K_t,
+K_t = sum_j k_j e_j e_j^T the tangent of the contacts, k_j = n K delta_j^(n-1)).  As the elements roll, the stiffness varies at the roller-pass frequency N f_cage
 (the varying compliance).  Angles run from +x towards +y (spindlesim frame); the shaft spins
 about +z, so the cage turns the same way.
 """
@@ -23,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..base import RADIAL
+from ..damping import check_beta
 from .kinematics import CageKinematics
 
 #: code of each waviness surface in the compiled force
@@ -68,12 +70,15 @@ class RigidRace:
     dof_names: tuple[str, ...] = RADIAL
     body: object = None  # rings' and rollers' thermal.growth.ThermoElastic (None: bearing steel), for at_temperatures
     made_clearance_m: float | None = None  # radial clearance as assembled (cold; None: radial_clearance_m)
+    damping_s: float = 0.0  # beta [s] of the damping C = beta K_t (bearings.damping; 0: the contact model alone)
+    damping_held: tuple[float, ...] | None = None  # C (2x2, row-major) held for a time integration, or None
 
     def __post_init__(self) -> None:
         if self.rollers < 3:
             raise ValueError("need at least 3 rolling elements")
         if self.stiffness <= 0 or self.exponent <= 0:
             raise ValueError("contact stiffness and exponent must be positive")
+        check_beta(self.damping_s)
 
     # kinematics ---------------------------------------------------------------
     def angles(self, shaft_angle_rad: float) -> np.ndarray:

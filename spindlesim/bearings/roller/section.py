@@ -6,7 +6,8 @@ geometry and materials (:class:`RollerGeometry`) plus the number of rollers, the
     bearings:
       - {type: roller, name: rear, node: 18, rollers: 12, model: rigid_race,
          inner_raceway_diameter_mm: 18.738, outer_raceway_diameter_mm: 28.262, roller_diameter_mm: 4.762,
-         width_mm: 6.35, radial_clearance_mm: 0.0, waviness: [{surface: outer, waves: 8, amplitude_um: 0.5}]}
+         width_mm: 6.35, radial_clearance_mm: 0.0, waviness: [{surface: outer, waves: 8, amplitude_um: 0.5}],
+         damping: {stiffness_proportional_s: 1.0e-5}}   # C = beta K (rigid_race; the default; 0: undamped)
 
 The rig section ``transient:`` of the transient analysis (``spindlesim.deck.transient``) describes
 seed 000's test rig with the same models.  Every key carries its unit; :func:`build` is the one
@@ -31,6 +32,7 @@ from typing import TYPE_CHECKING, Annotated, Literal, Optional, Union
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Fraction, NodeNumber, NonNegFloat, PositiveFloat
+from ..damping import RollingDamping, damping_of
 from ..temperatures import Expansion, PartTemperatures, body
 
 if TYPE_CHECKING:
@@ -175,12 +177,20 @@ class RollerEntry(RollerGeometry):
     thermal_expansion_1_K: Expansion = None
     """Linear expansion coefficient of rings and rollers [1/K] (`temperatures_C`). None: bearing steel's
     11.5e-6."""
+    damping: Optional[RollingDamping] = None
+    """Damping of the rigid_race model: C = beta K on its 2 x 2 tangent stiffness, beta
+    `stiffness_proportional_s` (0: undamped). None: 1.0e-5 s for rigid_race; the flexible_race model is damped
+    by its own contacts (`contact`, `housing`: seed 000 eq. 30) and takes no `damping`."""
 
     @model_validator(mode="after")
     def _consistent(self) -> "RollerEntry":
         check_geometry(self, self.model)
         if self.model == "flexible_race" and self.waviness:
             raise ValueError("waviness is modelled in the rigid_race model only")
+        if self.model == "flexible_race" and self.damping is not None:
+            raise ValueError("damping: the flexible_race model is damped by its roller and housing contacts "
+                             "(contact.damping_Ns_m2, housing.damping_Ns_m2; seed 000 eq. 30), not by C = beta K; "
+                             "`damping` applies to rigid_race")
         return self
 
 
@@ -224,7 +234,7 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
                              e.roller_diameter_mm * 1e-3, e.slip_inner, e.slip_outer)
         wav = tuple(Waviness(w.surface, w.waves, w.amplitude_um * 1e-6, np.radians(w.phase_deg)) for w in e.waviness)
         cold = RigidRaceBearing(e.name, node, e.rollers, K_total, n, kin, e.radial_clearance_mm * 1e-3, wav,
-                                body=_body(e))
+                                body=_body(e), damping_s=damping_of(e.damping))
         return cold if e.temperatures_C is None else cold.at_temperatures(e.temperatures_C.si())
     from .contact_force import CompliantContact
     from .bearing import FlexibleRaceBearing
