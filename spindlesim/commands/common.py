@@ -284,7 +284,8 @@ def run_measurement(name: str, inputs: list[Path], outdir: Path | None, call: Ca
     try:
         for p in inputs:
             if not p.is_file():
-                raise FrfFileError(p, None, "no such file" if not p.exists() else "not a file")
+                raise FrfFileError(p, None, "no such file" if not p.exists() else
+                                   "a directory, not a file" if p.is_dir() else "not a regular file")
         out = resolve_outdir(outdir, inputs[0].stem)
         from ..runs.common import measurement_run_info
 

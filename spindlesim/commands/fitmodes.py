@@ -21,7 +21,7 @@ def _band(ctx, param, value):
 
 
 @click.command("fitmodes")
-@click.argument("file", required=False, type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("file", required=False, type=click.Path(path_type=Path))  # a directory: one located line
 @click.option("--direction", type=click.Choice(["x", "y"]), default=None,
               help="The direction of a single-direction CSV file (default x), or the one term fitted of a file with "
                    "both [default: every direct term].")

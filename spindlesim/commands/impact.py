@@ -9,7 +9,7 @@ from .common import outdir_option, report_options
 
 
 @click.command("impact")
-@click.argument("records", nargs=-1, type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("records", nargs=-1, type=click.Path(path_type=Path))  # a directory: one located line
 @click.option("--direction", type=click.Choice(["x", "y"]), default=None,
               help="Direction of the tap test [default: the records' own (UFF), else x].")
 @click.option("--exponential", "decay_1_s", type=click.FloatRange(min=0.0), default=None, metavar="DECAY",

@@ -69,13 +69,14 @@ def _bad(tmp_path, text):
 
 @pytest.mark.parametrize("name, text, line, message", [
     ("missing", None, None, "no such file"),
+    ("a directory", "", None, "a directory, not a file"),
     ("too few points", "frequency_hz,real_m_N,imag_m_N\n100,1e-7,-1e-6\n", 2, "1 data row(s); at least two are needed"),
     ("header, no rows", "# tap\nfrequency_hz,real_m_N,imag_m_N\n", 2, "0 data row(s); at least two are needed"),
     ("out of order", "frequency_hz,real_m_N,imag_m_N\n100,1e-7,-1e-6\n120,1e-7,-1e-6\n110,1e-7,-1e-6\n", 4,
      "frequency 110 Hz does not increase (previous 120 Hz)"),
 ])
 def test_fitmodes_bad_file_is_one_located_line_exit_2_nothing_written(tmp_path, name, text, line, message):
-    path = tmp_path / "none.csv" if text is None else _bad(tmp_path, text)
+    path = tmp_path / "none.csv" if text is None else tmp_path if text == "" else _bad(tmp_path, text)
     out = tmp_path / "out"
     res = _run("fitmodes", path, "-o", out)
     assert res.exit_code == 2, res.output
