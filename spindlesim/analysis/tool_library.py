@@ -24,7 +24,8 @@ from .rcsa import condensed_load, joint_compliance, port_receptance, tool_tip_re
 
 log = logging.getLogger(__name__)
 
-__all__ = ["CoupledTool", "ToolLibrary", "couple_tools", "ToolLobes", "tool_lobes", "ToolLibraryStudy"]
+__all__ = ["CoupledTool", "ToolLibrary", "couple_tools", "ToolLobes", "tool_lobes", "ToolLibraryStudy",
+           "tool_library_study"]
 
 
 @dataclass(frozen=True)
@@ -154,3 +155,22 @@ class ToolLibraryStudy:
 
     library: ToolLibrary
     lobes: tuple[ToolLobes, ...] = ()
+
+
+def tool_library_study(model: ToolLibraryModel, speed_rpm: float, frequency_hz, bearings: Sequence | None = None,
+                       lobes_of: Sequence[tuple[str, object]] = (), spec=None, speed_limit_rpm: float | None = None,
+                       progress: Callable[[int, int], None] | None = None) -> ToolLibraryStudy:
+    """What ``spindlesim tools`` computes: every tool coupled onto the spindle (:func:`couple_tools`), and with a
+    chatter ``spec`` the lobes of each (name, operating points of the rotor with that tool) of ``lobes_of``."""
+    steps = len(model.tools) + len(lobes_of)
+
+    def tick(done: int, _total: int) -> None:
+        if progress is not None:
+            progress(done, steps)
+
+    library = couple_tools(model, speed_rpm, frequency_hz, bearings, progress=tick)
+    lobes = []
+    for k, (name, points) in enumerate(lobes_of):
+        lobes.append(tool_lobes(name, points, spec, speed_rpm, speed_limit_rpm))
+        tick(len(model.tools) + k + 1, steps)
+    return ToolLibraryStudy(library, tuple(lobes))

@@ -61,10 +61,13 @@ def _run(deck, outdir, report: bool = True) -> None:
     out = resolve_outdir(outdir, loaded)
     info = run_info_for(loaded, " ".join(sys.argv))
     written, failed, incomplete = [], [], []
+    from ..runs.common import RunContext
+
+    shared = RunContext(loaded)  # one assembly, each operating point and the thermal speed limit solved once
     with RunReport(loaded, info, out, names) as book:  # collects the warnings logged meanwhile
         for name in names:
             try:
-                paths = run_analysis(name, loaded, out, {}, run=info)
+                paths = run_analysis(name, shared, out, {}, run=info)
                 written += paths
                 book.done(name, paths)
             except DeckError as exc:

@@ -23,6 +23,7 @@ from ..deck.describe import FLUID_FILM_TYPES, bearing_entries
 from ..deck.loader import ANALYSES, LoadedDeck
 from ..output import drawing
 from ..output.hdf5 import RunInfo
+from .common import RunContext
 from ..registry import analysis, default_rows
 
 log = logging.getLogger(__name__)
@@ -37,17 +38,23 @@ def analyses() -> tuple[str, ...]:
     return tuple(RUNS)
 
 
-def run_info_for(loaded: LoadedDeck, command_line: str | None = None) -> RunInfo:
+def run_info_for(loaded: "LoadedDeck | RunContext", command_line: str | None = None) -> RunInfo:
     kw = {} if command_line is None else {"command_line": command_line}
     return RunInfo(deck_text=loaded.text, deck_source=loaded.source, deck_sha256=loaded.sha256, **kw)
 
 
-def run_analysis(name: str, loaded: LoadedDeck, outdir: str | Path, options: dict[str, Any] | None = None,
-                 progress: Progress = None, run: RunInfo | None = None) -> list[Path]:
+def run_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str | Path,
+                 options: dict[str, Any] | None = None, progress: Progress = None,
+                 run: RunInfo | None = None) -> list[Path]:
     """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths.
 
+    ``loaded``: a loaded deck (its analysis solves what it needs), or a :class:`~.common.RunContext` of it
+    shared by several calls (``spindlesim run``: one shaft assembly, each operating point solved once).
     Every file is on disk when it returns, figures drawn by a figure process included (they are
     waited for; a failed figure raises here, a failed or interrupted run cancels the ones not started)."""
+    from .common import context_of
+
+    loaded = context_of(loaded)
     if name not in RUNS:
         raise KeyError(f"unknown analysis {name!r}; known: {', '.join(RUNS)}")
     module, function = RUNS[name]

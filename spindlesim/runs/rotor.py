@@ -54,61 +54,34 @@ def run_modal(loaded, outdir, run, opts, progress):
 
 
 def run_campbell(loaded, outdir, run, opts, progress):
-    from ..analysis.campbell import solve_campbell
-    from ..output.campbell_plots import campbell_figure, campbell_frozen_figure
+    from ..analysis.campbell_study import campbell_study
+    from ..output.campbell_plots import campbell_figure, campbell_frozen_figure, campbell_thermal_figure
     from ..output.rotor_writers import write_campbell
 
     require_rotor(loaded, "campbell")
     d = loaded.deck
     speeds = opts.get("speeds_rpm")
     speeds = value_range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
-    points = operating_points(loaded)
-    modes = first(opts.get("modes"), d.campbell.modes)
-    orders, operating = excitation_orders(d), d.operating.speed_range_rpm
-    res = solve_campbell(points, speeds, n_modes=modes, progress=progress, exact=bool(opts.get("exact")),
-                         orders=orders, operating=operating)
-    frozen_rpm = d.campbell.compare_frozen_rpm
-    frozen = cold = stiffness = None
-    try:  # the comparisons: a Ctrl-C in them keeps the diagram solved, marked interrupted
-        if frozen_rpm is not None and not res.interrupted:  # the same assembly, states and basis
-            frozen = solve_campbell(points, res.speed_rpm, n_modes=modes, frozen_rpm=frozen_rpm, orders=orders,
-                                    operating=operating, exact=bool(opts.get("exact")))
-        if points.thermal is not None and len(res.speed_rpm) and not res.interrupted:
-            # the bearings as assembled at the same speeds: what the temperatures change
-            from ..analysis.points import OperatingPoints
-
-            cold_points = OperatingPoints(points.rotor)
-            cold = solve_campbell(cold_points, res.speed_rpm, n_modes=modes, orders=orders, operating=operating,
-                                  exact=bool(opts.get("exact")))
-            if cold.interrupted:
-                raise KeyboardInterrupt
-            stiffness = bearing_stiffness(points, cold_points, res.speed_rpm)
-    except KeyboardInterrupt:
-        frozen = frozen if frozen is not None and not frozen.interrupted else None
-        cold = stiffness = None
-        res = dataclasses.replace(res, interrupted=True, incomplete_reason=(
-            "interrupted by the user in the comparison diagrams (frozen bearings, cold spindle): the diagram "
-            "itself is complete, the comparisons not written"))
-    if res.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
-        run = dataclasses.replace(run, complete=False, incomplete_reason=res.incomplete_reason)
-    paths = [write_campbell(outdir / "campbell.h5", run, res, frozen, frozen_rpm, cold, stiffness,
+    st = campbell_study(operating_points(loaded), speeds, first(opts.get("modes"), d.campbell.modes),
+                        d.campbell.compare_frozen_rpm, excitation_orders(d), d.operating.speed_range_rpm,
+                        bool(opts.get("exact")), progress)
+    res = st.hot
+    if st.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
+        run = dataclasses.replace(run, complete=False, incomplete_reason=st.incomplete_reason)
+    paths = [write_campbell(outdir / "campbell.h5", run, res, st.frozen, st.frozen_rpm, st.cold, st.stiffness,
                             operating_rpm=d.operating.speed_rpm)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None,
                           teeth=cutter_teeth(d), speed_limit_rpm=_limit(loaded)))
-        if frozen is not None:
-            paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, frozen, frozen_rpm))
-        if cold is not None:
-            from ..output.campbell_plots import campbell_thermal_figure
-
-            m = points.thermal.model
-            label = (f"at the temperatures of the warm-up at {m.analyses_at_s / 60.0:g} min"
-                     if m.analyses == "warm_up" else "at thermal equilibrium")
-            paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, cold, stiffness, label))
-    if res.incomplete_reason:
+        if st.frozen is not None:
+            paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, st.frozen, st.frozen_rpm))
+        if st.cold is not None:
+            paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, st.cold, st.stiffness,
+                              st.thermal_label))
+    if st.incomplete_reason:
         from .status import IncompleteRun
 
-        raise IncompleteRun(res.incomplete_reason, paths, interrupted=res.interrupted)
+        raise IncompleteRun(st.incomplete_reason, paths, interrupted=st.interrupted)
     return paths
 
 
@@ -118,17 +91,6 @@ def _limit(loaded) -> float | None:
 
     lim = thermal_speed_limit(loaded)
     return None if lim is None else lim[0]
-
-
-def bearing_stiffness(hot, cold, speeds) -> dict:
-    """Each bearing's radial stiffness K_xx [N/m] at every speed, at its thermal equilibrium ("thermal") and
-    as assembled ("cold"), from the operating points' states (solved already by the two diagrams)."""
-    names = [b.name for b in hot.rotor.bearings]
-
-    def table(points):
-        return np.array([[kb[0, 0] for kb, _ in points.state(s).coefficients] for s in speeds])
-
-    return {"speed_rpm": np.asarray(speeds, float), "bearing": names, "thermal": table(hot), "cold": table(cold)}
 
 
 def excitation_orders(d) -> tuple[float, ...]:

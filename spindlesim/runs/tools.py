@@ -17,60 +17,41 @@ log = logging.getLogger(__name__)
 def study(loaded: Any, options: dict | None = None, progress=None):
     """The :class:`~spindlesim.analysis.tool_library.ToolLibraryStudy` of a loaded deck (module note)."""
     from ..analysis.points import OperatingPoints
-    from ..analysis.tool_library import ToolLibraryStudy, couple_tools, tool_lobes
-    from ..deck import DeckError, require_rotor, require_section
+    from ..analysis.tool_library import tool_library_study
+    from ..deck import DeckError, deck_folder, require_rotor, require_section
     from ..deck.document import library_tools
     from ..model.thermal import build_spindle_thermal
     from ..model.tool_library import build_tool_library, with_tool
-    from .common import operating_points, value_range
+    from .common import operating_points, thermal_speed_limit, value_range
 
     opts = options or {}
     require_section(loaded, "tools", "tools", "a list of named tools (interface, holder, joint, tool)")
     require_rotor(loaded, "tools")
     d = loaded.deck
     shaft_nodes = len(d.shaft.elements) + 1
-    bad = [loaded.issue(("loads", i, "node"), f"a load on node {p.node} sits on the deck's holder or tool: the tool "
-                                               f"library keeps loads on the shaft's nodes 1..{shaft_nodes} only")
-           for i, p in enumerate(d.loads) if p.node > shaft_nodes]
-    bad += [loaded.issue(("disks", i, "node"), f"a disk on node {k.node} sits on the deck's holder or tool: the tool "
-                                               f"library keeps disks on the shaft's nodes 1..{shaft_nodes} only")
-            for i, k in enumerate(d.disks) if k.node > shaft_nodes]
+    bad = [loaded.issue((what, i, "node"), f"a {what[:-1]} on node {x.node} sits on the deck's holder or tool: the "
+                                           f"tool library keeps {what} on the shaft's nodes 1..{shaft_nodes} only")
+           for what in ("loads", "disks") for i, x in enumerate(getattr(d, what)) if x.node > shaft_nodes]
     if bad:
         raise DeckError(bad)
     tools = library_tools(d)
-    model = build_tool_library(d, tools)
     speed = float(opts["speed_rpm"]) if opts.get("speed_rpm") is not None else float(d.operating.speed_rpm)
-    freqs = value_range(d.frf.frequencies_hz)
-    bearings = None
     points = operating_points(loaded)
+    bearings = None
     if points.thermal is not None:  # the spindle's bearings at their temperatures at this speed
-        T = points.thermal_state(speed).temperatures_C
-        bearings = points.thermal.rotor_at(T)[0].bearings
-    with_lobes = d.chatter is not None and opts.get("lobes", True)
-    steps = len(tools) * (2 if with_lobes else 1)
-
-    def tick(done: int, _total: int) -> None:
-        if progress is not None:
-            progress(done, steps)
-
-    library = couple_tools(model, speed, freqs, bearings, progress=tick)
-    lobes = []
-    if with_lobes:
+        bearings = points.thermal.rotor_at(points.thermal_state(speed).temperatures_C)[0].bearings
+    spec, lobes_of, limit = None, [], None
+    if d.chatter is not None and opts.get("lobes", True):
         from ..chatter import build_chatter
 
-        from ..deck import deck_folder
-        from .common import thermal_speed_limit
-
-        spec = build_chatter(d.chatter, deck_folder(loaded))
-        limit = thermal_speed_limit(loaded)
-        for k, (name, section) in enumerate(tools):
+        spec, limit = build_chatter(d.chatter, deck_folder(loaded)), thermal_speed_limit(loaded)
+        for name, section in tools:
             rotor = with_tool(d, section)
             thermal = build_spindle_thermal(d, rotor)
-            thermal = thermal if thermal is not None and thermal.analyses != "none" else None
-            lobes.append(tool_lobes(name, OperatingPoints(rotor, thermal), spec, speed,
-                                    None if limit is None else limit[0]))
-            tick(len(tools) + k + 1, steps)
-    return ToolLibraryStudy(library, tuple(lobes))
+            lobes_of.append((name, OperatingPoints(rotor, thermal if thermal is not None and thermal.analyses != "none"
+                                                   else None)))
+    return tool_library_study(build_tool_library(d, tools), speed, value_range(d.frf.frequencies_hz), bearings,
+                              lobes_of, spec, None if limit is None else limit[0], progress)
 
 
 def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:

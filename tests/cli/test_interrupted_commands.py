@@ -64,7 +64,7 @@ def test_ctrl_c_between_two_speeds_keeps_the_first(tmp_path, monkeypatch):
 
 
 def test_ctrl_c_in_campbells_comparison_keeps_the_diagram(tmp_path, monkeypatch):
-    import spindlesim.analysis.campbell as campbell
+    import spindlesim.analysis.campbell_study as campbell
 
     calls = []
 

@@ -189,3 +189,16 @@ def test_the_hdf5_check_sees_a_run_writing_a_file(tmp_path):
     assert _writes_hdf5(planted, "spindlesim.runs.planted") == [
         "planted.py:1: imports h5py", "planted.py:3: writes HDF5 with Data, write_h5",
         "planted.py:4: writes HDF5 with hdf5", "planted.py:6: writes HDF5 with spindlesim.output.hdf5"]
+
+
+def test_runs_only_write_and_draw():
+    """Issue 34: a run calls the analysis's public function, then writes and draws; the computing lives in the
+    analysis (each run function fits on a screen: 50 lines)."""
+    import ast
+
+    long = []
+    for path in sorted((ROOT / "runs").glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.FunctionDef) and node.end_lineno - node.lineno + 1 > 50:
+                long.append(f"{path.name}:{node.name} ({node.end_lineno - node.lineno + 1} lines)")
+    assert not long, long

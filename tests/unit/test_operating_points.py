@@ -67,9 +67,14 @@ def test_frf_with_its_tool_point_solves_its_state_once(counted, tmp_path):
 
 
 def test_the_analyses_of_one_run_share_the_assembly_and_the_deck_speed_state(counted, tmp_path):
+    """The analyses of one run context (what `spindlesim run` makes) share the assembly and the states; without
+    one, each call solves what it needs (nothing is cached by object identity)."""
+    from spindlesim.runs.common import RunContext
+
     loaded = load_deck(DECKS / "milling_spindle.yaml")
+    shared = RunContext(loaded)
     for name in ("static", "modal", "frf"):
-        run_analysis(name, loaded, tmp_path, {"plots": False})
+        run_analysis(name, shared, tmp_path, {"plots": False})
     assert counted["assemblies"] == 1
     assert counted["speeds"] == [18000.0]
 

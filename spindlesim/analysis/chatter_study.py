@@ -1,0 +1,102 @@
+"""What ``spindlesim chatter`` computes, as one frozen result: the lobes of a built ``chatter:`` section with the
+tool-point FRF where the section takes it from (modal parameters, measured files, or the rotor of the deck: at
+its operating speed, or recomputed at every speed of the diagram when the bearings' coefficients change over it
+or the section says so), the time-domain checks, and, with the FRF per speed, the lobes of the deck speed's FRF
+for comparison (every ``COMPARE_EVERY``-th speed).  The recommendation and the minimum stay at or below the
+spindle's thermal speed limit when one is given.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from ..chatter import run_chatter, stability_lobes
+from ..chatter.section import ChatterSpec
+from ..chatter.state_space import for_simulation
+from .points import OperatingPoints
+from .tool_point import coefficients_change, tool_point_model, tool_point_series
+
+log = logging.getLogger(__name__)
+
+#: the lobes of the FRF at the deck speed, drawn for comparison, are solved at every this-many-th speed
+COMPARE_EVERY = 4
+
+
+@dataclass(frozen=True, eq=False)
+class ChatterStudy:
+    """The lobes and their checks (``result``: a :class:`~spindlesim.chatter.ChatterResult`), the section as run
+    (``spec``, the added simulations included), the comparison at the deck speed (``at_deck``), the tool-point
+    model shown (``deck_tool``: the deck speed's, or the one FRF used) and where the FRF came from (``info``:
+    frf_source, frf_at_each_speed and why, deck_speed_rpm, node, model)."""
+
+    result: Any
+    spec: ChatterSpec
+    at_deck: Any = None
+    deck_tool: Any = None
+    info: dict = field(default_factory=dict)
+
+    # ---- named results --------------------------------------------------------------------------------
+    @property
+    def min_limit_depth_m(self) -> float:
+        m = self.result.minimum
+        return float("nan") if m is None else m[1]
+
+    @property
+    def recommended_speed_rpm(self) -> float:
+        r = self.result.recommendation
+        return float("nan") if r is None else r.speed_rpm
+
+
+def _rotor_tools(points: OperatingPoints, spec: ChatterSpec, deck_rpm: float, exact: bool, progress):
+    """(tool for the lobes, tool at the deck speed, provenance) from the rotor at its operating points."""
+    rotor = points.rotor
+    per_speed, reason = spec.frf_at_each_speed, "deck"
+    if per_speed is None:
+        per_speed, reason = coefficients_change(points, spec.speeds_rpm), "bearing coefficients"
+    info = {"frf_source": "rotor", "frf_at_each_speed": bool(per_speed), "deck_speed_rpm": deck_rpm,
+            "frf_at_each_speed_reason": reason}
+    if rotor.tool_tip is None:
+        log.info("the deck has no tool section: the cutting point is node 1")
+    if per_speed:
+        series = tool_point_series(points, spec.speeds_rpm, exact=exact, progress=progress)
+        info.update(node=series.node, model=series.model)
+        deck_tool = tool_point_model(points, deck_rpm) if deck_rpm > 0 else series.models[0]
+        return list(series.models), deck_tool, info
+    if deck_rpm <= 0:
+        raise ValueError("chatter with the FRF at the deck speed needs operating.speed_rpm > 0 "
+                         "(or frf_at_each_speed: true)")
+    deck_tool = tool_point_model(points, deck_rpm)
+    info.update(node=(rotor.tool_tip + 1) if rotor.tool_tip is not None else 1, model="full state space")
+    return deck_tool, deck_tool, info
+
+
+def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck_rpm: float = 0.0,
+                  exact: bool = False, simulate: tuple[tuple[float, float], ...] = (),
+                  speed_limit_rpm: float | None = None,
+                  progress: Callable[[int, int], None] | None = None) -> ChatterStudy:
+    """The module note's study of ``spec``; ``points``: the deck's rotor at its operating points (needed when the
+    FRF comes from the rotor), ``deck_rpm`` its operating speed, ``simulate`` more (speed rpm, depth m) checks in
+    time beside the section's."""
+    sims = tuple(spec.simulation_points) + tuple((float(s), float(a)) for s, a in simulate)
+    info: dict[str, Any] = {"frf_source": spec.frf_source}
+    deck_tool = None
+    tools_at: Callable | None = None
+    if spec.frf_source == "rotor":
+        if points is None:
+            raise ValueError("frf: rotor needs the rotor's operating points")
+        tool, deck_tool, info = _rotor_tools(points, spec, float(deck_rpm), exact, progress)
+        if isinstance(tool, list):  # the tool-point model at speeds added in unresolved pockets
+            tools_at = lambda speeds: tool_point_series(points, speeds, exact=exact).models  # noqa: E731
+    else:
+        tool = spec.tool
+    spec = dataclasses.replace(spec, simulation_points=sims)
+    result = run_chatter(spec, tool, simulation_tool=for_simulation(tool) if sims else None, tools_at=tools_at,
+                         speed_limit_rpm=speed_limit_rpm)
+    at_deck = None
+    if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed
+        at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
+                                  **dict(spec.method_options))
+    return ChatterStudy(result, spec, at_deck, deck_tool, info)
