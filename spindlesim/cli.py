@@ -59,7 +59,8 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
     """spindlesim: static and dynamic analysis of machine-tool spindles from YAML decks.
 
     Every subcommand takes an optional DECK (without one, an embedded default
-    deck is used) and -o OUTDIR (default out/<deck stem>).
+    deck is used) and -o OUTDIR (default out/<deck stem>); fitmodes and impact
+    take measurement files instead (without one, a packaged simulated tap test).
     """
     ctx.meta["spindlesim.strict"] = strict  # read by commands.common.load_or_default
     _configure_logging(verbose)

@@ -58,6 +58,9 @@ class Command:
     name: str
     help: str
     deck: str | None = None  # the embedded deck it runs without DECK (None: it takes no deck)
+    #: a command on measurement files instead of a deck: the packaged files it runs without FILE (a glob under
+    #: spindlesim/decks/)
+    input: str = ""
     #: ``module:function`` in spindlesim.output summarising its file ``<name>.h5`` (as an Analysis's)
     summary: str = ""
     #: the file stem of that summary, when it is not the command's name
@@ -146,7 +149,24 @@ TOOL_COMMANDS: tuple[Command, ...] = (
     Command("sweep", "Parameter study over any deck value (process pool or Dask), resumable.", "speed_study"),
     Command("calibrate", "Fit deck values (joints, bearing damping ...) to measured FRFs: calibrated deck, 95 % "
                          "intervals.", "tool_library", summary="calibration_summary:calibration", file="calibration"),
+    Command("fitmodes", "Modes of a measured FRF file (LSCF/LSFD, stabilisation diagram): modes.yaml for chatter.",
+            input="taptest/tap_tip_x.csv"),
+    Command("impact", "Tap test FRF from hammer and accelerometer records (H1, coherence, double hits flagged).",
+            input="taptest/tap_impact_x_*.csv"),
 )
+
+
+def command_entry(name: str) -> Command:
+    """The entry of the command ``name`` that is not one analysis; KeyError for another name."""
+    for c in TOOL_COMMANDS:
+        if c.name == name:
+            return c
+    raise KeyError(name)
+
+
+def file_commands() -> tuple[str, ...]:
+    """The commands on measurement files (they take a FILE, not a deck)."""
+    return tuple(c.name for c in TOOL_COMMANDS if c.input)
 
 
 def file_summaries() -> dict[str, str]:

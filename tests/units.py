@@ -12,7 +12,7 @@ SUFFIX_UNITS = {
     "_deg": "degree", "_rad": "rad", "_kg": "kg", "_mm": "mm", "_um": "um", "_Nm": "N m", "_m_N": "m/N",
     "_N_m": "N/m", "_Ns_m": "N s/m", "_Nm_rad": "N m/rad", "_Nms_rad": "N m s/rad", "_m_s": "m/s",
     "_m_s2": "m/s^2", "_m3_s": "m^3/s", "_Pa_s": "Pa s", "_kg_m2": "kg m^2", "_kg_m3": "kg/m^3", "_K": "K",
-    "_J": "J", "_g_mm": "g mm", "_N_m2": "N/m^2",
+    "_J": "J", "_g_mm": "g mm", "_N_m2": "N/m^2", "_m_N_s": "m/(N s)", "_m_N_s2": "m/(N s^2)",
 }
 #: names whose last word only looks like a unit
 NOT_A_UNIT = {"node_m"}

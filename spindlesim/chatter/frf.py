@@ -55,11 +55,18 @@ class Mode:
 
 @dataclass(frozen=True, eq=False)
 class ToolPointFrf:
-    """Sampled tool-point receptance ``H[f, 2, 2]`` [m/N] at ``frequency_hz[f]`` [Hz] (strictly increasing)."""
+    """Sampled tool-point receptance ``H[f, 2, 2]`` [m/N] at ``frequency_hz[f]`` [Hz] (strictly increasing).
+
+    A measured FRF may carry its ``coherence[f, 2, 2]`` (0 to 1; NaN for a term not measured; None: no term
+    has one) and the decay [1/s] of an exponential window its measurement applied, per direction (x, y):
+    the window moved every pole of that direction by -decay, i.e. it added decay / w_n to every damping
+    ratio (``spindlesim fitmodes`` takes it off; a sampled FRF used as it is keeps it)."""
 
     frequency_hz: np.ndarray
     H: np.ndarray
     source: str = ""
+    coherence: np.ndarray | None = None
+    window_decay_1_s: tuple[float, float] = (0.0, 0.0)
 
     def __post_init__(self) -> None:
         f = np.asarray(self.frequency_hz, float)
@@ -74,6 +81,21 @@ class ToolPointFrf:
             raise ValueError("H holds non-finite values")
         object.__setattr__(self, "frequency_hz", f)
         object.__setattr__(self, "H", H)
+        if self.coherence is not None:
+            c = np.asarray(self.coherence, float)
+            if c.shape != H.shape:
+                raise ValueError(f"coherence must have shape {H.shape}, got {c.shape}")
+            seen = c[np.isfinite(c)]
+            if np.any(np.isinf(c)) or np.any(seen < 0) or np.any(seen > 1 + 1e-9):
+                raise ValueError("coherence must be within [0, 1] (NaN: not measured)")
+            object.__setattr__(self, "coherence", np.minimum(c, 1.0))
+        decay = tuple(float(v) for v in self.window_decay_1_s)
+        if len(decay) != 2 or not all(np.isfinite(v) and v >= 0 for v in decay):
+            raise ValueError(f"window_decay_1_s must be two finite values >= 0 (x, y), got {self.window_decay_1_s}")
+        object.__setattr__(self, "window_decay_1_s", decay)
+
+    def _like(self, f: np.ndarray, H: np.ndarray, coherence: np.ndarray | None) -> "ToolPointFrf":
+        return ToolPointFrf(f, H, self.source, coherence, self.window_decay_1_s)
 
     @property
     def omega(self) -> np.ndarray:
@@ -87,7 +109,7 @@ class ToolPointFrf:
             keep &= f >= f_min_hz
         if f_max_hz is not None:
             keep &= f <= f_max_hz
-        return ToolPointFrf(f[keep], self.H[keep], self.source)
+        return self._like(f[keep], self.H[keep], None if self.coherence is None else self.coherence[keep])
 
     def interpolated(self, frequency_hz: np.ndarray) -> "ToolPointFrf":
         """Linear interpolation of real and imaginary parts (no extrapolation)."""
@@ -95,11 +117,14 @@ class ToolPointFrf:
         if f.min() < self.frequency_hz[0] or f.max() > self.frequency_hz[-1]:
             raise ValueError("interpolation outside the measured band")
         H = np.empty((len(f), 2, 2), complex)
+        C = None if self.coherence is None else np.empty((len(f), 2, 2))
         for i in range(2):
             for j in range(2):
                 H[:, i, j] = (np.interp(f, self.frequency_hz, self.H[:, i, j].real)
                               + 1j * np.interp(f, self.frequency_hz, self.H[:, i, j].imag))
-        return ToolPointFrf(f, H, self.source)
+                if C is not None:
+                    C[:, i, j] = np.interp(f, self.frequency_hz, self.coherence[:, i, j])
+        return self._like(f, H, C)
 
     def magnitude_peak(self) -> tuple[float, float]:
         """(frequency [Hz], largest singular value [m/N]) of the most compliant sample."""

@@ -94,12 +94,13 @@ def remove_empty_outdirs() -> None:
 
 
 def resolve_outdir(outdir: Path | None, loaded, sub: str = "") -> Path:
-    """The output folder (``-o``, else out/<deck stem>[/sub]), made and checked writable before anything
-    is computed: a folder that cannot be written is one line and exit code 2, not a failure after the
-    computation."""
+    """The output folder (``-o``, else out/<deck stem>[/sub]; ``loaded``: the deck, or the stem itself), made and
+    checked writable before anything is computed: a folder that cannot be written is one line and exit code 2, not
+    a failure after the computation."""
     import tempfile
 
-    out = outdir if outdir is not None else Path("out") / loaded.stem / sub
+    stem = loaded if isinstance(loaded, str) else loaded.stem
+    out = outdir if outdir is not None else Path("out") / stem / sub
     try:
         made = [p for p in (out, *out.parents) if not p.exists()]
         out.mkdir(parents=True, exist_ok=True)
@@ -148,18 +149,21 @@ def report_options(fn):
     return wrapper
 
 
-def print_results(paths: list[Path]) -> None:
-    """The written paths, then a short summary of the key results read back from the files (or JSON)."""
+def print_results(paths: list[Path], summaries: list | None = None) -> None:
+    """The written paths, then a short summary of the key results read back from the files (or JSON);
+    ``summaries``: [(name, lines, data)] built by the command from its result instead."""
     ctx = click.get_current_context(silent=True)
     mode = ctx.meta.get("spindlesim.report", "text") if ctx is not None else "text"
-    summaries = []
-    if mode != "quiet":
+    if mode == "quiet":
+        summaries = []
+    elif summaries is None:
         from ..output.summary import summarize
 
         try:
             summaries = summarize(paths)
         except Exception as exc:  # a summary must never hide the results themselves
             log.warning("results summary unavailable: %s", exc)
+            summaries = []
     if mode == "json":
         click.echo(json.dumps({"paths": [str(p) for p in paths], "summary": {n: d for n, _, d in summaries}},
                               default=_json_default, allow_nan=True))
@@ -253,3 +257,48 @@ def fail(message: str, code: int) -> None:
     click.echo(message, err=True)
     remove_empty_outdirs()
     sys.exit(code)
+
+
+# ----------------------------------------------------------------------------------------------
+# commands on measurement files (fitmodes, impact): a FILE instead of a deck
+
+
+def packaged_inputs(name: str) -> list[Path]:
+    """The packaged measurement files command ``name`` runs without FILE (its registry entry's ``input``, a
+    glob under spindlesim/decks/)."""
+    from importlib import resources
+
+    from ..registry import command_entry
+
+    folder = Path(str(resources.files("spindlesim.decks")))
+    return sorted(folder.glob(command_entry(name).input))
+
+
+def run_measurement(name: str, inputs: list[Path], outdir: Path | None, call: Callable, summarize: Callable) -> None:
+    """``call(out, run_info) -> (result, paths)`` on the measurement files ``inputs``, then the paths and
+    ``summarize(result, paths) -> (lines, data)``.  A file that cannot be used or measurements that cannot be
+    analysed: one line (``path:line: message``), exit 2, nothing written; no result: one line, exit 1."""
+    from ..chatter.readers import FrfFileError
+
+    out = None
+    try:
+        for p in inputs:
+            if not p.is_file():
+                raise FrfFileError(p, None, "no such file" if not p.exists() else
+                                   "a directory, not a file" if p.is_dir() else "not a regular file")
+        out = resolve_outdir(outdir, inputs[0].stem)
+        from ..runs.common import measurement_run_info
+
+        result, paths = call(out, measurement_run_info(inputs, " ".join(sys.argv)))
+    except KeyboardInterrupt as exc:
+        code = exit_code_of(exc)
+        click.echo(f"spindlesim {name}: interrupted (exit code {code})", err=True)
+        remove_empty_outdirs()
+        sys.exit(code)
+    except FrfFileError as exc:
+        fail(f"{exc}; nothing was written", exit_code_of(exc))
+    except (ValueError, ArithmeticError, RuntimeError, OSError) as exc:
+        where = str(inputs[0]) if len(inputs) == 1 else f"{len(inputs)} files"
+        fail(f"spindlesim {name}: {where}: {exc}; nothing was written", exit_code_of(exc))
+    lines, data = summarize(result, paths)
+    print_results(paths, [(name, lines, data)])

@@ -24,10 +24,13 @@ EXIT_INCOMPLETE = 3
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what a shell reports for a Ctrl-C'd program
 
 #: (module, class): the input describes what cannot be solved as given (a deck error; a rotor not held,
-#: stiffnesses apart by a unit mistake; a fluid film at rest), exit 2 wherever it is met in a failure's chain
+#: stiffnesses apart by a unit mistake; a fluid film at rest; a measurement file that cannot be read, measurements
+#: that cannot be analysed), exit 2 wherever it is met in a failure's chain
 INPUT_ERRORS = (("spindlesim.deck.errors", "DeckError"),
                 ("spindlesim.analysis.operating", "SingularRotorError"),
-                ("spindlesim.bearings.base", "SpeedRequiredError"))
+                ("spindlesim.bearings.base", "SpeedRequiredError"),
+                ("spindlesim.chatter.readers", "FrfFileError"),  # a measured FRF or impact record file (located)
+                ("spindlesim.measured.errors", "MeasurementInputError"))
 #: (module, class): a run that wrote its files but did not finish (its ``interrupted`` flag: by Ctrl-C)
 INCOMPLETE = ("spindlesim.runs.status", "IncompleteRun")
 

@@ -106,3 +106,26 @@ def remember_thermal_speed_limit(loaded, limit: tuple[float, float] | None) -> N
     analyses of the same run context that shade the speeds above it."""
     if isinstance(loaded, RunContext):
         loaded.remember_thermal_speed_limit(limit)
+
+
+def measurement_run_info(paths, command_line: str | None = None):
+    """The provenance of a run on measurement files (``fitmodes``, ``impact``): their text as the "deck" (each
+    file's name and SHA-256 first; a binary file by its digest alone), their paths as its source."""
+    import hashlib
+    from pathlib import Path
+
+    from ..output.hdf5 import RunInfo
+
+    parts, digest = [], hashlib.sha256()
+    for p in map(Path, paths):
+        raw = p.read_bytes()
+        digest.update(raw)
+        own = hashlib.sha256(raw).hexdigest()
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            text = f"(binary, {len(raw)} bytes)\n"
+        parts.append(f"# ===== {p.name} (sha256 {own}) =====\n{text}")
+    kw = {} if command_line is None else {"command_line": command_line}
+    return RunInfo(deck_text="".join(parts), deck_source=", ".join(str(p) for p in paths),
+                   deck_sha256=digest.hexdigest(), **kw)

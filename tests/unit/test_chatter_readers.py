@@ -63,7 +63,8 @@ def test_csv_header_case_comments_and_column_order(tmp_path):
     ("frequency_hz,xx_real_m_N,xx_imag,yy_real_m_N\n", None, 1, "unknown column(s) xx_imag"),
     ("frequency_hz,xx_real_m_N,yy_real_m_N,yy_imag_m_N\n", None, 1, "xx_imag_m_N is missing"),
     ("frequency_hz,real_m_N,imag_m_N\n100,1e-7,nan\n110,1e-7,-1e-6\n", "x", 2, "not finite"),
-    ("frequency_hz,real_m_N,imag_m_N\n100,1e-7,-1e-6\n", "x", None, "at least two are needed"),
+    ("frequency_hz,real_m_N,imag_m_N\n100,1e-7,-1e-6\n", "x", 2, "at least two are needed"),
+    ("# tap\nfrequency_hz,real_m_N,imag_m_N\n", "x", 2, "0 data row(s); at least two are needed (a header but no rows)"),
     ("# nothing\n", "x", None, "empty file"),
 ])
 def test_csv_errors_name_file_line_and_problem(tmp_path, text, direction, line, fragment):
@@ -132,3 +133,46 @@ def test_uff_errors(tmp_path, pyuff):
     with pytest.raises(FrfFileError) as err:
         read_frf_uff(q)
     assert err.value.line == starts[1] + 1 and "abscissa type 17" in str(err.value)
+
+
+def test_csv_coherence_column_and_window_decay(tmp_path):
+    """An optional coherence column (single-direction layout: `coherence`; all directions: `xx_coherence` ...) and
+    the `# exponential_window_decay_1_s: D` comment are read, carried through band, interpolation, the single
+    direction writer and combine_frfs; files without them read as before (coherence None, decay 0)."""
+    p = tmp_path / "tap.csv"
+    p.write_text("# a tap test\n# exponential_window_decay_1_s: 4.5\nfrequency_hz,real_m_N,imag_m_N,coherence\n"
+                 "100,1e-7,-1e-6,0.5\n110,2e-7,-2e-6,0.9\n120,3e-7,-3e-6,1.0\n")
+    fy = read_frf_csv(p, "y")
+    assert fy.coherence.shape == (3, 2, 2) and fy.coherence[:, 1, 1].tolist() == [0.5, 0.9, 1.0]
+    assert np.isnan(fy.coherence[:, 0, 0]).all() and fy.window_decay_1_s == (0.0, 4.5)
+    assert fy.band(105.0, 125.0).coherence[:, 1, 1].tolist() == [0.9, 1.0]
+    assert fy.interpolated(np.array([105.0])).coherence[0, 1, 1] == \
+        pytest.approx(0.7)
+    q = tmp_path / "back.csv"
+    write_frf_csv(q, fy, direction="y")
+    back = read_frf_csv(q, "y")
+    assert np.array_equal(back.coherence[:, 1, 1], fy.coherence[:, 1, 1]) and back.window_decay_1_s == (0.0, 4.5)
+    x = tmp_path / "x.csv"
+    x.write_text("frequency_hz,real_m_N,imag_m_N\n100,1e-7,-1e-6\n110,2e-7,-2e-6\n120,3e-7,-3e-6\n")
+    fx = read_frf_csv(x, "x")
+    assert fx.coherence is None and fx.window_decay_1_s == (0.0, 0.0)
+    both = combine_frfs([fx, fy])
+    assert both.window_decay_1_s == (0.0, 4.5) and np.isnan(both.coherence[:, 0, 0]).all()
+    assert both.coherence[:, 1, 1].tolist() == [0.5, 0.9, 1.0]
+    a = tmp_path / "all.csv"
+    a.write_text("frequency_hz,xx_real_m_N,xx_imag_m_N,xx_coherence\n100,1e-7,-1e-6,0.25\n110,2e-7,-2e-6,0.75\n")
+    assert read_frf_csv(a).coherence[:, 0, 0].tolist() == [0.25, 0.75]
+
+
+@pytest.mark.parametrize("text, line, fragment", [
+    ("frequency_hz,real_m_N,imag_m_N,coherence\n100,1e-7,-1e-6,1.5\n110,1e-7,-1e-6,1\n", 2, "coherence: 1.5 is outside"),
+    ("frequency_hz,xx_real_m_N,xx_imag_m_N,yy_coherence\n100,1e-7,-1e-6,1\n", 1, "yy_coherence without yy_real_m_N"),
+    ("# exponential_window_decay_1_s: -2\nfrequency_hz,real_m_N,imag_m_N\n100,1,1\n110,1,1\n", 1, "must be finite and >= 0"),
+    ("# exponential_window_decay_1_s: fast\nfrequency_hz,real_m_N,imag_m_N\n100,1,1\n110,1,1\n", 1, "is not a number"),
+])
+def test_csv_coherence_and_decay_errors(tmp_path, text, line, fragment):
+    p = tmp_path / "bad.csv"
+    p.write_text(text)
+    with pytest.raises(FrfFileError) as err:
+        read_frf_csv(p, "x")
+    assert err.value.line == line and fragment in str(err.value)

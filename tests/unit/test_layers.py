@@ -25,6 +25,7 @@ RANK = {
     "contact": 1,
     "thermal": 1.5,  # heat transfer, heat generation, growth: pure physics the bearings and analyses call
     "bearings": 2, "chatter": 2,
+    "measured": 2.5,  # measured data: modal identification (sdypy-EMA), FRFs from impacts (pyFRF); reads chatter's files
     "deck": 3, "model": 3,
     "fe": 4,
     "analysis": 5,
