@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import Any, Callable
 
 from ..chatter import run_chatter, stability_lobes
@@ -76,10 +77,11 @@ def _rotor_tools(points: OperatingPoints, spec: ChatterSpec, deck_rpm: float, ex
 def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck_rpm: float = 0.0,
                   exact: bool = False, simulate: tuple[tuple[float, float], ...] = (),
                   speed_limit_rpm: float | None = None,
-                  progress: Callable[[int, int], None] | None = None) -> ChatterStudy:
+                  progress: Callable[[int, int], None] | None = None, stability_map: bool = False) -> ChatterStudy:
     """The module note's study of ``spec``; ``points``: the deck's rotor at its operating points (needed when the
     FRF comes from the rotor), ``deck_rpm`` its operating speed, ``simulate`` more (speed rpm, depth m) checks in
-    time beside the section's."""
+    time beside the section's, ``stability_map`` the semi-discretization's map even where the section does not ask
+    for it."""
     sims = tuple(spec.simulation_points) + tuple((float(s), float(a)) for s, a in simulate)
     info: dict[str, Any] = {"frf_source": spec.frf_source}
     deck_tool = None
@@ -92,11 +94,14 @@ def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck
             tools_at = lambda speeds: tool_point_series(points, speeds, exact=exact).models  # noqa: E731
     else:
         tool = spec.tool
-    spec = dataclasses.replace(spec, simulation_points=sims)
+    opts = dict(spec.method_options)
+    if stability_map:
+        opts["stability_map"] = True
+    spec = dataclasses.replace(spec, simulation_points=sims, method_options=MappingProxyType(opts))
     result = run_chatter(spec, tool, simulation_tool=for_simulation(tool) if sims else None, tools_at=tools_at,
                          speed_limit_rpm=speed_limit_rpm)
     at_deck = None
     if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed
         at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
-                                  **dict(spec.method_options))
+                                  **(opts | {"stability_map": False}))
     return ChatterStudy(result, spec, at_deck, deck_tool, info)

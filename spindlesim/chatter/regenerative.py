@@ -168,10 +168,13 @@ def frequency_domain_diagram(process, tool: ToolSource, speeds_rpm: np.ndarray,
         omega, H = sample_tool(tools[0], frequency_hz)
         lobes, depth, freq = limits_at_delays(omega, branches(H), tau, max_lobes)
     else:
-        parts = []
-        for s, t in enumerate(tools):
-            omega, H = sample_tool(t, frequency_hz)
-            parts.append(limits_at_delays(omega, branches(H), tau[s:s + 1], max_lobes))
+        from .semi_discretization import parallel_map  # the speeds on the worker threads
+
+        def one(s):
+            omega, H = sample_tool(tools[s], frequency_hz)
+            return limits_at_delays(omega, branches(H), tau[s:s + 1], max_lobes)
+
+        parts = parallel_map(one, range(len(tools)))
         K = max((len(p[0]) for p in parts), default=0)
         lobes = np.arange(K)
         depth = np.full((K, len(speeds)), np.inf)

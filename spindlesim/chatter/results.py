@@ -70,6 +70,8 @@ class LobeDiagram:
     capped: np.ndarray = field(default_factory=lambda: np.array([], dtype=bool))
     depth_cap_m: float = float("nan")
     selection: str = ""
+    #: semi-discretization steps per tooth period at each speed (0: another method)
+    steps_per_period: np.ndarray = field(default_factory=lambda: np.array([], dtype=int))
 
     def __post_init__(self) -> None:
         S = len(self.speed_rpm)
@@ -77,6 +79,8 @@ class LobeDiagram:
             object.__setattr__(self, "method_per_speed", np.full(S, self.method, dtype=object))
         if len(self.capped) != S:
             object.__setattr__(self, "capped", np.zeros(S, bool))
+        if len(self.steps_per_period) != S:
+            object.__setattr__(self, "steps_per_period", np.zeros(S, int))
 
     def limit_at(self, speed_rpm: float | np.ndarray) -> np.ndarray:
         """Limit depth interpolated linearly between the computed speeds."""
@@ -117,6 +121,7 @@ class LobeDiagram:
                                          else None, "", "<U4"),
                        method_per_speed=cat(self.method_per_speed, other.method_per_speed, dtype=object),
                        capped=cat(self.capped, other.capped, dtype=bool),
+                       steps_per_period=cat(self.steps_per_period, other.steps_per_period, dtype=int),
                        depth_cap_m=float(np.nanmin([self.depth_cap_m, other.depth_cap_m]))
                        if np.isfinite([self.depth_cap_m, other.depth_cap_m]).any() else float("nan"),
                        notes=self.notes + ((note,) if note else ()))

@@ -49,8 +49,14 @@ __all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_
 
 log = logging.getLogger(__name__)
 METHOD = "semi_discretization"
+#: points per wave at 1.2 x the highest significant mode: with the extrapolation as accurate as 30 without it
+#: (milling spindle, 40 speeds against 60 points per wave and a 0.1 % error control: within 0.10 % against 0.08 %)
+POINTS_PER_WAVE = 12.0
 CAP_FACTOR = 20.0  # default depth cap: this many times the smallest zero-order limit
 ERROR_TOL = 5e-3  # estimated relative depth error above which a speed is solved again with more steps
+#: with the extrapolation, the correction above which a speed is solved again with more steps (so far from
+#: the step count's asymptotic range the extrapolation is not trusted)
+CORRECTION_TOL = 2e-2
 STEPS_IN_CUT = 20
 HARD_MAX_STEPS = 2000
 PEAK_RISE = 1e-2  # a local maximum of rho on the grid is searched when it rises this much of 1 - rho above a neighbour
@@ -289,6 +295,19 @@ def _solve(process, models, speeds, m_s, grid: _Depths, order, rtol, peak_check)
     return out
 
 
+def _search(process, models, speeds, m_s, guess, cap, order, rtol, peak_check, close: bool = False) -> dict:
+    """As :func:`_solve`, by the continued brackets of :mod:`.sd_search` (no stability map)."""
+    from .sd_search import continued_limits
+
+    prob = _Grouped(process, models, speeds, m_s, order)
+    tau = process.tooth_period_s(speeds)
+    rates = np.array([np.max(np.linalg.eigvals(mdl.A).real) for mdl in models])
+    rho0 = np.exp((rates if len(models) > 1 else np.full(len(speeds), rates[0])) * tau)  # zero depth: free decay
+    res = continued_limits(prob, guess, cap, rho0, rtol, peak_check, close=close)
+    res.update(rho=None, depths=None)
+    return res
+
+
 def _steps_needed(process, models, speeds, m_s, res, order, points_per_wave, error_tol) -> np.ndarray:
     """Steps each speed needs (0: its m will do): a chatter wave resolved by fewer than half the
     points per wave, or an estimated depth error above ``error_tol``.  The estimate: rho at the limit
@@ -307,17 +326,20 @@ def _steps_needed(process, models, speeds, m_s, res, order, points_per_wave, err
                         np.maximum(m_h, 4), order)
         rho_h = prob.spectral_radius(np.arange(len(hit)), res["limit"][hit])
         q2 = (m_s[hit] / np.maximum(m_h, 4)) ** 2
-        err = np.abs((rho_h - 1.0) / (q2 - 1.0) / (res["slope"][hit] * res["limit"][hit]))
+        corr = (rho_h - 1.0) / (q2 - 1.0) / (res["slope"][hit] * res["limit"][hit])
+        err = np.abs(corr)
         bad = err > error_tol
         need[hit[bad]] = np.maximum(need[hit[bad]], np.ceil(m_s[hit[bad]] * np.sqrt(err[bad] / (0.4 * error_tol))))
-        res["error"] = np.full(S, np.nan)
-        res["error"][hit] = err
+        res["error"], res["correction"] = np.full(S, np.nan), np.full(S, np.nan)
+        res["error"][hit], res["correction"][hit] = err, corr
     return need
 
 
 def _merge_rows(base: dict, redo: dict, sel: np.ndarray) -> None:
     for key in ("limit", "freq", "kind", "lobe", "slope"):
         base[key][sel] = redo[key]
+    if base["rho"] is None:
+        return
     D = max(base["rho"].shape[1], redo["rho"].shape[1])
     for d in (base, redo):
         if d["rho"].shape[1] < D:
@@ -328,13 +350,17 @@ def _merge_rows(base: dict, redo: dict, sel: np.ndarray) -> None:
 
 
 def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray, *,
-                              steps: int | None = None, order: int = 1, points_per_wave: float = 30.0,
+                              steps: int | None = None, order: int = 1, points_per_wave: float = POINTS_PER_WAVE,
                               min_steps: int = 30, max_steps: int = 400, steps_in_cut: int = STEPS_IN_CUT,
                               depths_m: np.ndarray | None = None, depth_max_m: float | None = None,
                               depth_cap_m: float | None = None, n_depths: int = 40, rtol: float = 1e-4, peak_check: float = 0.9,
                               error_tol: float = ERROR_TOL, reduce_model: bool = True,
-                              fit_options: dict | None = None, **_ignored) -> LobeDiagram:
-    """Limit depth by semi-discretization (module docstring), with the stability map it evaluated.
+                              fit_options: dict | None = None, stability_map: bool = False,
+                              extrapolate: bool = True,
+                              **_ignored) -> LobeDiagram:
+    """Limit depth by semi-discretization (module docstring); with ``stability_map`` (or ``depths_m``) by the
+    march over the depth grid, whose spectral radii the diagram keeps, else by brackets continued from the
+    neighbouring speeds (:mod:`.sd_search`, the same limits to the search tolerance ``rtol``).
 
     ``error_tol``: the estimated relative depth error above which a speed is solved again with more
     steps (``np.inf``: no error control, the plain discretisation); ``reduce_model``: replace a large
@@ -353,12 +379,14 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     sd_models, model_note = models_for_sd(models, process.mean_directional()) if reduce_model else (models, "")
     if model_note:
         notes.append(model_note)
+    want_map = stability_map or depths_m is not None
+    zoa = zero_order(models if per_speed else models[0])  # the default depth range and the searches' guesses
     if depths_m is not None:
         grid = _Depths(np.sort(np.asarray(depths_m, float)), float(np.max(depths_m)), 0)
     elif depth_max_m is not None:
         grid = _Depths(np.linspace(depth_max_m / n_depths, depth_max_m, n_depths), depth_max_m, 0)
     else:
-        a_min, a_max = _zoa_scale(process, models[0], zero_order(models if per_speed else models[0]))
+        a_min, a_max = _zoa_scale(process, models[0], zoa)
         cap = CAP_FACTOR * a_min if depth_cap_m is None else float(depth_cap_m)
         top = min(1.25 * min(a_max, 3.0 * a_min), cap)
         grid = _Depths(np.linspace(top / n_depths, top, n_depths), cap, max(2, n_depths // 2))
@@ -368,19 +396,34 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     if fixed and steps * process.cut_fraction < steps_in_cut:
         log.warning("%d steps per tooth period put %.1f steps in the cut (fewer than %d)", steps,
                     steps * process.cut_fraction, steps_in_cut)
-    res = _solve(process, sd_models, speeds, m_s, grid, order, rtol, peak_check)
+    if want_map:
+        res = _solve(process, sd_models, speeds, m_s, grid, order, rtol, peak_check)
+    else:
+        res = _search(process, sd_models, speeds, m_s, zoa.limit_depth_m, grid.cap, order, rtol, peak_check)
+    extrapolate = extrapolate and not fixed and order == 1 and np.isfinite(error_tol)
     if not fixed:  # too few points on the chatter wave, or too large an error estimate: again, finer
-        need = _steps_needed(process, sd_models, speeds, m_s, res, order, points_per_wave, error_tol)
+        tol = max(error_tol, CORRECTION_TOL) if extrapolate else error_tol
+        need = _steps_needed(process, sd_models, speeds, m_s, res, order, points_per_wave, tol)
         redo = np.flatnonzero(need > m_s)
         if len(redo):
             m_new = _round_steps(np.minimum(need[redo], np.maximum(4 * m_s[redo], max_steps)), HARD_MAX_STEPS,
                                  m_s[redo])
             log.info("%d speed(s) solved again with more steps per period", len(redo))
             sub = sd_models if not per_speed else [sd_models[i] for i in redo]
-            again = _Depths(grid.values.copy(), grid.cap, 0)
-            _merge_rows(res, _solve(process, sub, speeds[redo], m_new, again, order, rtol, peak_check), redo)
+            if want_map:
+                again = _solve(process, sub, speeds[redo], m_new, _Depths(grid.values.copy(), grid.cap, 0), order,
+                               rtol, peak_check)
+            else:  # from the limits found, which are close
+                again = _search(process, sub, speeds[redo], m_new, res["limit"][redo], grid.cap, order, rtol,
+                                peak_check, close=True)
+            _merge_rows(res, again, redo)
             m_s = m_s.copy()
             m_s[redo] = m_new
+            if extrapolate:  # the corrections with the new steps
+                _steps_needed(process, sub, speeds[redo], m_new, again, order, points_per_wave, tol)
+                res["correction"][redo] = again["correction"]
+    if extrapolate:  # Richardson: the limit of the converged discretization, second order
+        res["limit"] = res["limit"] * (1.0 + np.nan_to_num(res["correction"]))
     limit, freq, kind, lobe_no = res["limit"], res["freq"], res["kind"], res["lobe"]
     hit = np.flatnonzero(np.isfinite(limit))
     lobes = []
@@ -394,6 +437,6 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
                      f"{speed_runs(speeds[capped])}")
     notes.append(f"steps per tooth period {m_s.min()}-{m_s.max()} (at least {steps_in_cut} in the cut "
                  f"unless fixed; the cut is {100 * process.cut_fraction:.3g} % of the tooth period)")
-    smap = StabilityMap(speeds, res["depths"], res["rho"], m_s, order)
+    smap = StabilityMap(speeds, res["depths"], res["rho"], m_s, order) if want_map else None
     return LobeDiagram(speeds, limit, freq, tuple(lobes), METHOD, process.describe(), kind, smap,
-                       per_speed, tuple(notes), capped=capped, depth_cap_m=grid.cap)
+                       per_speed, tuple(notes), capped=capped, depth_cap_m=grid.cap, steps_per_period=m_s)

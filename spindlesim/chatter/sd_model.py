@@ -77,8 +77,8 @@ def _modal(model: ToolPointModel) -> _Modal:
     times the highest mode with a tenth of the largest peak compliance (the band where chatter
     arises, as in the frequency grid; a rotor's stiff, nearly undamped modes far above it go to the
     rest)."""
-    lam, V = sla.eig(model.A, check_finite=False)
-    W = sla.inv(V, check_finite=False)
+    lam, V, lu = model.eigen
+    W = sla.lu_solve(lu, np.eye(len(lam), dtype=complex), check_finite=False)
     up = lam.imag > 1e-9 * np.abs(lam).max()
     CV, WB = model.C @ V, W @ model.B
     R = np.einsum("ir,rj->rij", CV, WB)
@@ -129,23 +129,31 @@ def models_for_sd(models: list, K0: np.ndarray, span: float = 3.0) -> tuple[list
     at the tip of the highest pocket, 7 x the minimum)."""
     if not models or any(not isinstance(m, ToolPointModel) or m.A.shape[0] <= REDUCE_ABOVE_STATES for m in models):
         return models, ""
+    from .semi_discretization import parallel_map  # the speeds' models on the worker threads
+
+    def full(m):
+        md, w = _modal(m), 2 * np.pi * m.frequency_grid()
+        return md, w, _depth_curve(K0, m.receptance(w))
+
     try:
-        modal = [_modal(m) for m in models]
-        grids = [2 * np.pi * m.frequency_grid() for m in models]
+        modal, grids, curves = (list(x) for x in zip(*parallel_map(full, models)))
     except (np.linalg.LinAlgError, ValueError):
         return models, ""
-    curves = [_depth_curve(K0, m.receptance(w)) for m, w in zip(models, grids)]
     masks = [np.isfinite(c) & (c <= span * c.min()) for c in curves]
     n_full = models[0].A.shape[0]
     for level in _LEVELS:
         count = max(int(np.count_nonzero(md.peak >= level * md.peak.max())) for md in modal)
         if 2 * count >= n_full:
             break
-        red = [dominant_modes(m, count, md) for m, md in zip(models, modal)]
-        err = 0.0
-        for r, w, c, mk in zip(red, grids, curves, masks):
-            cr = _depth_curve(K0, r.receptance(w[mk]))
-            err = max(err, float(np.max(np.abs(cr / c[mk] - 1), initial=0.0)) if np.all(np.isfinite(cr)) else np.inf)
+        def reduced(i, count=count):
+            r = dominant_modes(models[i], count, modal[i])
+            cr = _depth_curve(K0, r.receptance(grids[i][masks[i]]))
+            c = curves[i][masks[i]]
+            return r, float(np.max(np.abs(cr / c - 1), initial=0.0)) if np.all(np.isfinite(cr)) else np.inf
+
+        got = parallel_map(reduced, range(len(models)))
+        red = [g[0] for g in got]
+        err = max(g[1] for g in got)
         log.info("semi-discretization model: %d modes (peak compliance >= %g of the largest): depth curve "
                  "within %.2g", count, level, err)
         if err <= REDUCTION_RTOL:

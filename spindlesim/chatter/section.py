@@ -130,14 +130,19 @@ class SdOptions(DeckModel):
     steps_per_period: Optional[Annotated[int, Field(ge=4, le=2000)]] = None  # None: from points_per_wave
     """Time steps per tooth period. None: `points_per_wave` points on a wave at 1.2 times the highest
     significant mode's frequency, between 30 and 400, rounded up to a multiple of 10."""
-    points_per_wave: Annotated[float, Field(ge=4.0, le=200.0)] = 30.0
+    points_per_wave: Annotated[float, Field(ge=4.0, le=200.0)] = 12.0
     """Points per vibration period at 1.2 times the highest significant mode's frequency, when
-    `steps_per_period` is not given."""
+    `steps_per_period` is not given (the limits are then extrapolated from this and half the steps)."""
     depth_points: Annotated[int, Field(ge=4, le=2000)] = 40
     """Number of axial depths of the stability map at each speed."""
     depth_max_mm: Optional[PositiveFloat] = None
-    """Largest axial depth of the stability map. None: 1.25 times the zero-order estimate (the smaller of its
-    largest limit and 3 times its smallest)."""
+    """Largest axial depth searched (the cap) and of the stability map. None: the cap is 20 times the smallest
+    zero-order limit, the map goes to 1.25 times the zero-order estimate (the smaller of its largest limit and 3
+    times its smallest) and further where a speed is still stable there."""
+    stability_map: bool = False
+    """Also the spectral radius over a depth grid at every speed (chatter_stability_map.png; `spindlesim chatter
+    --map`). false: the limits alone, by brackets continued from the neighbouring speeds (the same limits,
+    about a quarter of the evaluations)."""
 
 
 class SimulationPoint(DeckModel):
@@ -300,7 +305,7 @@ def build_chatter(section: ChatterSection, base_dir: Path | str | None = None) -
     source, tool = _tool(sec.frf, Path(base_dir) if base_dir is not None else Path.cwd())
     sd = sec.semi_discretization
     opts = {"order": sd.order, "steps": sd.steps_per_period, "points_per_wave": sd.points_per_wave,
-            "n_depths": sd.depth_points,
+            "n_depths": sd.depth_points, "stability_map": sd.stability_map,
             "depth_max_m": sd.depth_max_mm * 1e-3 if sd.depth_max_mm is not None else None}
     sim_points, sim_opts = (), {}
     if sec.simulate is not None:

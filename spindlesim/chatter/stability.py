@@ -116,7 +116,7 @@ def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
     per_speed = isinstance(src, (list, tuple))
     added: dict[float, Tool] = {}
     if not per_speed or tools_at is not None:
-        same_cap = dict(options)
+        same_cap = dict(options) | {"stability_map": False}  # the added speeds: the map stays the grid's
         if np.isfinite(diagram.depth_cap_m) and all(options.get(k) is None for k in ("depths_m", "depth_max_m")):
             same_cap["depth_cap_m"] = diagram.depth_cap_m  # the added speeds searched as deep as the grid's
 

@@ -100,9 +100,14 @@ class ToolPointModel:
 
     # -- frequency response -------------------------------------------------------------------
     @cached_property
-    def _eig(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    def eigen(self) -> tuple[np.ndarray, np.ndarray, tuple]:
+        """(poles, eigenvectors V, LU factors of V): computed once for the FRF and the modal reductions."""
         lam, V = sla.eig(self.A, check_finite=False)
-        lu = sla.lu_factor(V, check_finite=False)
+        return lam, V, sla.lu_factor(V, check_finite=False)
+
+    @cached_property
+    def _eig(self) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        lam, V, lu = self.eigen
         gecon = sla.get_lapack_funcs("gecon", (V,))
         rcond, info = gecon(lu[0], np.linalg.norm(V, 1), norm="1")  # LAPACK's 1-norm estimate
         if info != 0 or rcond < 1.0 / _COND_LIMIT:
@@ -220,8 +225,12 @@ class ToolPointModel:
 def _off_poles(d: np.ndarray, lam: np.ndarray) -> np.ndarray:
     """``d`` = j w - lambda [f, n] with every entry closer to its pole than POLE_GAP |lambda| moved out to that
     distance (same direction; on the pole itself, along +j): only undamped poles can be that close."""
+    light = np.flatnonzero(np.abs(lam.real) < POLE_GAP * np.abs(lam))  # only these can come that close
+    if not len(light):
+        return d
     gap = POLE_GAP * np.abs(lam)[None, :]
-    near = np.abs(d) < gap
+    near = np.zeros(d.shape, bool)
+    near[:, light] = np.abs(d[:, light]) < gap[:, light]
     if not near.any():
         return d
     d = d.copy()

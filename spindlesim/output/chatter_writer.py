@@ -110,6 +110,10 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
     return data, attrs
 
 
+#: the attribute ``stability_map`` of a semi-discretization run that did not ask for the map
+MAP_NOT_ASKED = "not computed (ask with spindlesim chatter --map, or semi_discretization: {stability_map: true})"
+
+
 def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_tool, info: dict[str, Any]) -> Path:
     dg = result.diagram
     data: dict[str, Any] = _limits("/chatter", dg.speed_rpm, dg.limit_depth_m, dg.chatter_frequency_hz)
@@ -128,6 +132,9 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
         data.update(_limits("/chatter/at_deck_speed", at_deck.speed_rpm, at_deck.limit_depth_m,
                             at_deck.chatter_frequency_hz))
         data.update(_methods("/chatter/at_deck_speed", at_deck))
+    if np.any(np.asarray(dg.steps_per_period) > 0):
+        data["/chatter/steps_per_period"] = Data(np.asarray(dg.steps_per_period), "1", ("speed_rpm",),
+                                                 "semi-discretization steps per tooth period (0: another method)")
     sm = dg.stability_map
     if sm is not None:
         g = "/chatter/stability_map"
@@ -144,6 +151,8 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
         "process": dg.process, "method": dg.method, "method_selection": dg.selection,
         "frf_source": info["frf_source"], "frf_at_each_speed": bool(info.get("frf_at_each_speed", False)),
         "capped_speeds": int(np.count_nonzero(dg.capped)), "notes": "; ".join(dg.notes), **pocket_attrs}}
+    if dg.method == "semi_discretization":
+        attrs["/chatter"]["stability_map"] = "written" if sm is not None else MAP_NOT_ASKED
     if np.isfinite(dg.depth_cap_m):
         attrs["/chatter"]["depth_cap_m"] = dg.depth_cap_m
     if np.any(dg.capped):

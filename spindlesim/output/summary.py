@@ -175,6 +175,8 @@ def chatter(f):
         data.update(recommended_speed_rpm=n, recommended_depth_m=dep, recommended_speed_tolerance_rpm=tol)
     elif "recommendation" in a:
         lines.append(f"  recommended: {a['recommendation']}")
+    if "stability_map" in a:
+        lines.append(f"  stability map: {a['stability_map']}")
     for name in g.get("simulation", {}):
         s = g["simulation"][name].attrs
         state = "stable" if s["stable"] else f"CHATTER at {float(s['chatter_frequency_hz']):.0f} Hz"

@@ -6,7 +6,7 @@ the FRF is taken at the deck speed, or recomputed at every speed of the diagram
 (``frf_at_each_speed``; by default whenever the bearings' coefficients change over the speed
 range); the lobes at the deck speed are then computed too and drawn on the same plot, so the
 effect of the speed-dependent modes is in view.  Options: ``simulate`` = [(speed rpm, depth mm),
-...] time-domain checks added to the deck's.  ``analysis.chatter_study`` computes it all; this run writes and
+...] time-domain checks added to the deck's; ``map``: the semi-discretization's stability map too.  ``analysis.chatter_study`` computes it all; this run writes and
 draws.
 """
 
@@ -36,7 +36,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     limit = thermal_speed_limit(loaded)
     st = chatter_study(spec, points, float(d.operating.speed_rpm) if d.operating is not None else 0.0,
                        bool(opts.get("exact")), tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ()),
-                       None if limit is None else limit[0], progress)
+                       None if limit is None else limit[0], progress, bool(opts.get("map")))
     return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.result.tool, st.deck_tool, st.info)
 
 

@@ -127,6 +127,14 @@ def test_summary_and_file_say_method_cap_and_recommendation(tmp_path):
         inside = (n >= a["pocket_speed_min_rpm"]) & (n <= a["pocket_speed_max_rpm"])
         assert np.all(lim[inside] >= a["recommended_depth_m"] * (1 - 1e-9))
         assert len(g["pockets/depth_m"]) >= 1 and g["pockets/depth_m"][0] == pytest.approx(a["recommended_depth_m"])
-        assert np.isnan(g["stability_map/spectral_radius"][:]).any()  # evaluated up to the crossing only
+        assert "stability_map" not in g and "stability map: not computed (ask with" in res.output
         summary = f"{a['recommended_speed_rpm']:,.0f} rpm +- {a['recommended_speed_tolerance_rpm']:,.0f} rpm"
     assert summary in res.output
+    # with --map: the map too, and the same limits (the march and the continued brackets, to the search tolerance)
+    res = CliRunner().invoke(main, ["chatter", str(deck), "--map", "-o", str(tmp_path / "map")])
+    assert res.exit_code == 0, res.output
+    assert "stability map: written" in res.output and (tmp_path / "map" / "chatter_stability_map.png").is_file()
+    with h5py.File(tmp_path / "map" / "chatter.h5") as f:
+        g = f["chatter"]
+        assert np.isnan(g["stability_map/spectral_radius"][:]).any()  # evaluated up to the crossing only
+        assert np.allclose(g["limit_depth_m"][:], lim, rtol=2e-4)
