@@ -83,9 +83,10 @@ def timing(repeat: int) -> None:
     for name, proc, tl, S, D in (("SD map, single DOF, 5 % immersion", low, SDOF, 100, 40),
                                  ("SD map, 4 modes x/y, half immersion", half, tool, 100, 40)):
         t0 = time.perf_counter()
-        d = stability_lobes(proc, tl, np.linspace(5000.0, 25000.0, S), "semi_discretization", n_depths=D)
+        d = stability_lobes(proc, tl, np.linspace(5000.0, 25000.0, S), "semi_discretization", n_depths=D,
+                            stability_map=True)
         dt = time.perf_counter() - t0
-        m = d.stability_map.steps_per_period
+        m = d.steps_per_period
         print(f"   {name:40s} {S} x {D} grid + refinement: {dt:6.2f} s (steps/period {m.min()}-{m.max()})")
 
 
