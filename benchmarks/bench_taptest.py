@@ -29,16 +29,22 @@ TEN = """
 """
 
 
+def ten_tools_deck(folder: pathlib.Path) -> tuple[pathlib.Path, str]:
+    """decks/tool_library.yaml with three more tools (ten in all), written into ``folder``: (path, text)."""
+    text = (ROOT / "decks" / "tool_library.yaml").read_text().replace("\ndisks:\n", TEN + "disks:\n", 1)
+    text = text.replace("path: calibration/tap_", f"path: {ROOT}/decks/calibration/tap_")
+    deck = folder / "ten_tools.yaml"
+    deck.write_text(text)
+    return deck, text
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--runs", type=int, default=3)
     args = ap.parse_args()
     exe = spindlesim_exe()
     tmp = pathlib.Path(tempfile.mkdtemp())
-    text = (ROOT / "decks" / "tool_library.yaml").read_text().replace("\ndisks:\n", TEN + "disks:\n", 1)
-    text = text.replace("path: calibration/tap_", f"path: {ROOT}/decks/calibration/tap_")
-    deck = tmp / "ten_tools.yaml"
-    deck.write_text(text)
+    deck, text = ten_tools_deck(tmp)
     floor = tmp / "floor.py"
     floor.write_text(FLOOR)
     rows = [

@@ -42,7 +42,7 @@ from scipy.optimize import minimize_scalar
 
 from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
-from .semi_discretization import N_MULTIPLIERS, SdProblem, workers, parallel_map
+from .semi_discretization import N_MULTIPLIERS, SdProblem, workers
 from .state_space import ToolSource, as_state_space, tool_at_speeds
 
 __all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_STEPS"]
@@ -89,7 +89,7 @@ class _Grouped:
             idx = np.flatnonzero(self.group[s_idx] == g)
             if len(idx):
                 pieces += [(prob, p) for p in np.array_split(idx, min(len(idx), workers()))]
-        mults = parallel_map(lambda t: t[0].multipliers(self.local[s_idx[t[1]]], depth[t[1]]), pieces)
+        mults = SdProblem.batches((prob, self.local[s_idx[p]], depth[p]) for prob, p in pieces)
         for (_, p), mu in zip(pieces, mults):
             out[p, :mu.shape[1]] = mu
         return out

@@ -34,10 +34,14 @@ Fourier-analysed and the largest harmonic q is taken (Dombovari, Zatarain and In
 
 from __future__ import annotations
 
+import copy
 import logging
+import multiprocessing
 import os
+import signal
 import threading
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, ThreadPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 
 import numpy as np
@@ -89,6 +93,49 @@ def _monodromy(P, R0, R1, Cr, Yx=None, Yh=None):
 
 
 _POOLS: dict[int, ThreadPoolExecutor] = {}
+#: work of one call of :meth:`SdProblem.batches` (evaluations x steps x states x monodromy order, about 1 ms
+#: of one core per 1e5) above which its pieces go to worker processes: an evaluation holds the interpreter
+#: lock for most of its time (a loop over the steps of small products), so threads share one core
+PROCESS_WORK = 2e6
+_SERIAL = False  # in a worker process: everything on its one thread
+_PROCESSES: list[ProcessPoolExecutor | None] = []
+_PROCESS_LOCK = threading.Lock()
+
+
+def _worker_start() -> None:
+    global _SERIAL
+    _SERIAL = True
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent decides (it cancels and stops the pool)
+
+
+def _process_pool() -> ProcessPoolExecutor | None:
+    """The worker processes of the semi-discretization (one per core, forked once, as the sweep's local pool:
+    a fork server or a spawned worker would import the main module again, which a user's script may not
+    allow); None with one core, inside another process pool's worker (a sweep's case: the cores are taken)
+    or with SPINDLESIM_SD_PROCESSES=0."""
+    if (_SERIAL or workers() < 2 or os.environ.get("SPINDLESIM_SD_PROCESSES", "1") == "0"
+            or multiprocessing.parent_process() is not None):
+        return None
+    with _PROCESS_LOCK:
+        if not _PROCESSES:
+            try:
+                ctx = multiprocessing.get_context("fork")
+                _PROCESSES.append(ProcessPoolExecutor(workers(), mp_context=ctx, initializer=_worker_start))
+            except (OSError, ValueError) as exc:  # no fork on this platform
+                log.info("semi-discretization on threads only: %s", exc)
+                _PROCESSES.append(None)
+        return _PROCESSES[0]
+
+
+def _piece(prob: "SdProblem", depth: np.ndarray) -> np.ndarray:
+    return prob.multipliers(np.arange(len(prob.speeds)), depth)
+
+
+def _broken() -> None:
+    with _PROCESS_LOCK:
+        if _PROCESSES and _PROCESSES[0] is not None:
+            _PROCESSES[0].shutdown(wait=False, cancel_futures=True)
+        _PROCESSES[:] = [None]
 
 
 def workers() -> int:
@@ -109,7 +156,7 @@ def parallel_map(fn, items) -> list:
     already a worker (a worker waiting on its own pool could wait forever)."""
     items = list(items)
     n = workers()
-    if n == 1 or len(items) < 2 or threading.current_thread().name.startswith(_PREFIX):
+    if n == 1 or len(items) < 2 or _SERIAL or threading.current_thread().name.startswith(_PREFIX):
         return [fn(x) for x in items]
     if n not in _POOLS:
         _POOLS[n] = ThreadPoolExecutor(n, thread_name_prefix=_PREFIX)
@@ -213,6 +260,48 @@ class SdProblem:
         self.D = np.stack(feed) if any(np.any(d) for d in feed) else None
         self.shared = len(models) == 1
         self._K: dict[float, np.ndarray] = {}
+
+    def __getstate__(self) -> dict:
+        state = dict(self.__dict__)
+        state["_K"] = {}  # rebuilt where needed
+        return state
+
+    def subset(self, sel: np.ndarray) -> "SdProblem":
+        """The same problem at the speeds ``speeds[sel]`` only (what a worker process is sent)."""
+        new = copy.copy(self)
+        new.speeds, new.tau, new._K = self.speeds[sel], self.tau[sel], {}
+        if not self.shared:
+            new.A, new.B, new.Cr = self.A[sel], self.B[sel], self.Cr[sel]
+            new.D = None if self.D is None else self.D[sel]
+        return new
+
+    def work(self, evaluations: int) -> float:
+        """Size of ``evaluations`` evaluations (steps x states x monodromy order each), for PROCESS_WORK."""
+        n = self.A.shape[1]
+        return float(evaluations) * self.steps * n * (n + self.U.shape[1] * self.steps)
+
+    @staticmethod
+    def batches(pieces) -> list[np.ndarray]:
+        """``[prob.multipliers(s_idx, depth) for prob, s_idx, depth in pieces]``: on the worker processes
+        when there are several pieces and their work is above PROCESS_WORK, else on the worker threads.  The
+        numbers are the same either way (each piece is evaluated whole, in one place)."""
+        pieces = list(pieces)
+        pool = None
+        if len(pieces) > 1 and sum(p.work(len(s)) for p, s, _ in pieces) > PROCESS_WORK:
+            pool = _process_pool()
+        if pool is not None:
+            futures = []
+            try:
+                futures = [pool.submit(_piece, p.subset(np.asarray(s)), np.asarray(d, float)) for p, s, d in pieces]
+                return [f.result() for f in futures]
+            except BrokenProcessPool as exc:  # a worker died (killed, out of memory): on threads from now on
+                log.warning("semi-discretization worker processes stopped (%s); going on with threads", exc)
+                _broken()
+            except BaseException:
+                for f in futures:
+                    f.cancel()
+                raise
+        return parallel_map(lambda t: t[0].multipliers(t[1], t[2]), pieces)
 
     def _model(self, s: np.ndarray):
         idx = np.zeros_like(s) if self.shared else s

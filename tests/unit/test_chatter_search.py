@@ -31,6 +31,7 @@ CASES = {
 
 @pytest.fixture
 def evaluations(monkeypatch):
+    monkeypatch.setenv("SPINDLESIM_SD_PROCESSES", "0")  # every evaluation in this process, where it is counted
     count = [0]
     orig = sd.SdProblem.multipliers
 

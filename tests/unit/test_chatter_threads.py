@@ -1,6 +1,6 @@
-"""The semi-discretization shares its monodromy batches among threads: the limit depths do not depend
-on how many threads there are, and a worker that asks for more parallel work runs it itself (a worker
-waiting on its own pool would wait forever)."""
+"""The semi-discretization shares its monodromy batches among threads or worker processes: the limit depths do
+not depend on how many threads there are nor on where the batches run, and a worker that asks for more parallel
+work runs it itself (a worker waiting on its own pool would wait forever)."""
 
 import threading
 
@@ -40,3 +40,21 @@ def test_nested_parallel_work_runs_in_the_worker(monkeypatch):
     caller.join(timeout=60.0)  # a deadlock fails the test instead of hanging the suite
     assert not caller.is_alive(), "nested parallel_map deadlocked"
     assert out == [[[(k, j) for j in range(3)] for k in range(4)]]
+
+
+def test_batches_on_worker_processes_give_the_same_limits_as_threads(monkeypatch):
+    """Every batch above PROCESS_WORK (here: all) goes to the worker processes; each is evaluated whole in one
+    place, so the limits are equal to the last bit, and the pool is really used (its workers ran)."""
+    speeds = np.linspace(9000.0, 24000.0, 12)
+    monkeypatch.setenv("SPINDLESIM_SD_PROCESSES", "0")
+    threads = stability_lobes(PROCESS, TOOL, speeds, "semi_discretization").limit_depth_m
+    monkeypatch.setenv("SPINDLESIM_SD_PROCESSES", "1")
+    monkeypatch.setattr(sd, "PROCESS_WORK", 0.0)
+    _with_workers(monkeypatch, 2)
+    sent = []
+    submit = sd.ProcessPoolExecutor.submit
+    monkeypatch.setattr(sd.ProcessPoolExecutor, "submit", lambda self, *a, **k: sent.append(1) or submit(self, *a, **k))
+    procs = stability_lobes(PROCESS, TOOL, speeds, "semi_discretization").limit_depth_m
+    assert len(sent) > 10
+    assert np.all(np.isfinite(threads))
+    np.testing.assert_array_equal(procs, threads)
