@@ -104,8 +104,11 @@ def parallel_figure(res, title: str = ""):
             ax.plot(x, (np.array(row(res.reference), float) - lo) / span, "--", color="k", lw=1.5, zorder=4,
                     label="deck's design")
         for k in range(len(cols)):
-            ax.annotate(f"{lo[k]:.4g}", (k, 0), textcoords="offset points", xytext=(2, -12), fontsize="x-small")
-            ax.annotate(f"{hi[k]:.4g}", (k, 1), textcoords="offset points", xytext=(2, 4), fontsize="x-small")
+            var = p.variables[k] if k < len(p.variables) else None
+            low, high = ((var.choices[int(lo[k])], var.choices[int(hi[k])]) if var is not None and var.discrete
+                         else (lo[k], hi[k]))
+            ax.annotate(_label(low), (k, 0), textcoords="offset points", xytext=(2, -12), fontsize="x-small")
+            ax.annotate(_label(high), (k, 1), textcoords="offset points", xytext=(2, 4), fontsize="x-small")
         ax.set_xticks(x)
         ax.set_xticklabels(cols, rotation=20, ha="right", fontsize="x-small")
         ax.legend(fontsize="x-small", loc="upper right")
@@ -115,3 +118,7 @@ def parallel_figure(res, title: str = ""):
     fig.suptitle(f"{title}\nfeasible designs; " + ("the Pareto set" if len(p.objectives) > 1 else "the best")
                  + " in red", fontsize="small")
     return fig
+
+
+def _label(v) -> str:
+    return v if isinstance(v, str) else f"{float(v):.4g}"
