@@ -341,3 +341,37 @@ def test_the_global_method_finds_the_span_optimum_too(tmp_path, monkeypatch):
     res = optimize(load_deck(_deck(tmp_path, ("budget: 60", "budget: 80"))), tmp_path / "o", workers=1)
     assert res.method == "global"
     assert res.records[res.best].values[0] == pytest.approx(52.729, rel=0.01)
+
+
+def test_the_run_report_shows_the_optimisation_written_beside_it(tmp_path):
+    """`spindlesim optimize -o OUT/optimize`, then `spindlesim run -o OUT`: report.html has the optimisation's
+    summary (the best design against the deck's, what limits it) and its figures; `run` does not rerun it."""
+    out = tmp_path / "out"
+    res = CliRunner().invoke(main, ["optimize", str(DECK), "-o", str(out / "optimize"), "-q"])
+    assert res.exit_code == 0, res.output
+    before = (out / "optimize" / "evaluations.jsonl").read_text()
+    res = CliRunner().invoke(main, ["run", str(DECK), "-o", str(out), "-q"])
+    assert res.exit_code == 0, res.output
+    page = (out / "report.html").read_text()
+    for text in ("best design (evaluation", "limited by: nothing (an interior optimum)", "optimize_history.png",
+                 "Optimisation: parallel coordinates"):
+        assert text in page, text
+    assert (out / "optimize" / "evaluations.jsonl").read_text() == before
+
+
+def test_a_tied_value_moves_a_bearing_and_keeps_the_shaft_length(tmp_path):
+    """Front bearing A moved along the shaft (the last overhang element longer, the first span element shorter by
+    as much: tied with factor -1): every design has the deck's length, so the deck's mass, 3.8842 kg, to 1e-12;
+    the nose stiffens as the overhang shortens, so the optimum is the lower bound (overhang 250 + 20 mm)."""
+    deck = _deck(tmp_path, ("    - path: shaft.elements.6.2\n      min: 30\n      max: 150\n      tied: "
+                            "[{path: shaft.elements.7.2, factor: 1}, {path: shaft.elements.8.2, factor: 1},\n"
+                            "             {path: shaft.elements.9.2, factor: 1}]",
+                            "    - {path: shaft.elements.5.2, min: 20, max: 80, tied: [{path: shaft.elements.6.2, "
+                            "factor: -1}]}"),
+                 ("    - {maximize: static_stiffness_N_m}\n", "    - {maximize: static_stiffness_N_m}\n  constraints:\n"
+                                                            "    - {name: rotor_mass_kg, max: 10}\n"))
+    res = optimize(load_deck(deck), tmp_path / "o", workers=1)
+    masses = [r.results["rotor_mass_kg"] for r in res.records]
+    assert np.allclose(masses, RHO * np.pi * D**2 / 4 * 0.700, rtol=1e-12, atol=0)
+    assert res.records[res.best].values[0] == pytest.approx(20.0)
+    assert any("shaft.elements.5.2 at its lower bound" in s for s in res.limits), res.limits
