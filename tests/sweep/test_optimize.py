@@ -375,3 +375,59 @@ def test_a_tied_value_moves_a_bearing_and_keeps_the_shaft_length(tmp_path):
     assert np.allclose(masses, RHO * np.pi * D**2 / 4 * 0.700, rtol=1e-12, atol=0)
     assert res.records[res.best].values[0] == pytest.approx(20.0)
     assert any("shaft.elements.5.2 at its lower bound" in s for s in res.limits), res.limits
+
+
+@pytest.mark.slow
+def test_a_real_ctrl_c_on_two_workers_then_the_same_command_equals_a_clean_run(tmp_path):
+    """The milling spindle's front pair (preload 5-30 um, contact angle 15 or 25 deg) for stiffness and the first
+    natural frequency on two worker processes, 16 designs: SIGINT to the process group once 3 designs are
+    journalled ends it with 130 and optimize.h5 marked incomplete; the same command then finishes with the
+    designs, results and Pareto set of an uninterrupted run."""
+    import os
+    import signal
+    import subprocess
+    import time
+
+    import h5py
+
+    from tests.processes import as_in_a_terminal
+
+    text = (ROOT / "decks" / "studies" / "milling_front_pair.yaml").read_text()
+    text = text.replace("    - {maximize: thermal_speed_limit_rpm}\n", "    - {maximize: first_natural_frequency_hz}\n")
+    text = text.replace("  budget: 200\n", "  budget: 16\n")
+    deck = tmp_path / "pair.yaml"
+    deck.write_text(text)
+    spindlesim = ROOT / ".venv" / "bin" / "spindlesim"
+    env = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
+    cmd = [str(spindlesim), "optimize", str(deck), "--workers", "2", "-q", "-o"]
+    out = tmp_path / "resumed"
+    proc = subprocess.Popen([*cmd, str(out)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env,
+                            start_new_session=True, preexec_fn=as_in_a_terminal)
+    try:
+        journal = out / "evaluations.jsonl"
+        deadline = time.monotonic() + 300
+        while time.monotonic() < deadline:
+            if journal.exists() and len(journal.read_text().splitlines()) >= 3:
+                break
+            assert proc.poll() is None, proc.stderr.read().decode()
+            time.sleep(0.05)
+        else:
+            pytest.fail("the study did not get going")
+        os.killpg(proc.pid, signal.SIGINT)
+        proc.wait(timeout=60)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    assert proc.returncode == 130, proc.stderr.read().decode()
+    with h5py.File(out / "optimize.h5") as f:
+        assert not bool(f.attrs["complete"])
+        n_before = f["optimize/results"].shape[0]
+    assert 3 <= n_before < 16
+    for folder in (out, tmp_path / "clean"):
+        done = subprocess.run([*cmd, str(folder)], env=env, capture_output=True, text=True, timeout=600)
+        assert done.returncode == 0, done.stderr
+    with h5py.File(out / "optimize.h5") as f, h5py.File(tmp_path / "clean" / "optimize.h5") as g:
+        assert bool(f.attrs["complete"])
+        for name in ("values", "choice", "results", "feasible", "pareto"):
+            assert np.array_equal(f[f"optimize/{name}"][:], g[f"optimize/{name}"][:], equal_nan=name == "values"), name
