@@ -42,8 +42,12 @@ def optimize(f):
     else:
         objectives = [o.split(" ", 1)[1] for o in str(a["objectives"]).split("; ")]
         lines.append(f"Pareto set: {len(pareto)} designs (pareto/point_*.yaml)")
-        for o in objectives:
+        senses = [o.split(" ", 1)[0] for o in str(a["objectives"]).split("; ")]
+        for o, sense in zip(objectives, senses):
             k = results.index(o)
             v = Y[pareto, k]
             lines.append(f"  {o}: {np.min(v):.6g} .. {np.max(v):.6g} {units[k]} (the deck's design: {Y[0, k]:.6g})")
+            end = pareto[int(np.argmax(v) if sense == "maximize" else np.argmin(v))]
+            lines.append(f"    its best end (evaluation {end}): "
+                         + ", ".join(f"{nm} = {text[end, j]}" for j, nm in enumerate(names)))
     return lines, data
