@@ -149,6 +149,8 @@ TOOL_COMMANDS: tuple[Command, ...] = (
     Command("sweep", "Parameter study over any deck value (process pool or Dask), resumable.", "speed_study"),
     Command("calibrate", "Fit deck values (joints, bearing damping ...) to measured FRFs: calibrated deck, 95 % "
                          "intervals.", "tool_library", summary="calibration_summary:calibration", file="calibration"),
+    Command("optimize", "Design optimisation over deck values: an optimum, or a Pareto front of stiffness, heat, "
+                        "life ... (resumable).", "bearing_span", summary="optimize_summary:optimize"),
     Command("fitmodes", "Modes of a measured FRF file (LSCF/LSFD, stabilisation diagram): modes.yaml for chatter.",
             input="taptest/tap_tip_x.csv"),
     Command("impact", "Tap test FRF from hammer and accelerometer records (H1, coherence, double hits flagged).",

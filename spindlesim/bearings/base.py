@@ -209,6 +209,11 @@ class BearingBase:
              lubricant_C: float, displacement: np.ndarray | None = None) -> HeatReport | None:
         return None
 
+    def rating_life_Mrev(self, speed: float, static_load: np.ndarray) -> float | None:
+        """The basic rating life under ``static_load`` (what the shaft puts on the bearing) at ``speed`` [rad/s],
+        in 10^6 revolutions; None where the family has no rating (linear coefficients, fluid films ...)."""
+        return None
+
     def compiled(self) -> CompiledForce:
         raise NotImplementedError(
             f"bearing {getattr(self, 'name', '?')!r} has no compiled force; integrate with method newmark")

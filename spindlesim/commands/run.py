@@ -86,6 +86,8 @@ def _run(deck, outdir, report: bool = True) -> None:
                 click.echo(f"spindlesim run: {name} failed: {exc}{unit_hint(loaded)}", err=True)
                 book.failed(name, exc)
                 failed.append(name)
+    if report:
+        _optimize_results(loaded, out, book)
     if report and not _write_report(book, written):
         failed.append("report")
     print_results(written)
@@ -125,3 +127,23 @@ def _write_report(book, written: list) -> bool:
         click.echo(f"spindlesim run: report.html not written: {type(exc).__name__}: {exc}", err=True)
         return False
     return True
+
+
+def _optimize_results(loaded, out, book) -> None:
+    """A deck with an ``optimize:`` section: the study `spindlesim optimize` wrote into the run's folder
+    (``optimize/``, its default beside the run's files) joins the report; `run` does not run it."""
+    if getattr(loaded.deck, "optimize", None) is None:
+        return
+    from pathlib import Path
+
+    from ..sweep.optimize_run import written_study
+
+    found = written_study(Path(out) / "optimize")
+    if found is None:
+        return
+    paths, reason = found
+    book.names.append("optimize")
+    if reason:
+        book.incomplete("optimize", paths, reason)
+    else:
+        book.done("optimize", paths)

@@ -22,7 +22,7 @@ from ..bearings.types import BEARING_TYPES
 from ..contact.section import ContactSection
 from ..thermal.section import SpindleThermalSection
 from ..fields import AnyNumber, DeckModel, Dof, NodeNumber, NonNegFloat, PositiveFloat, Range
-from .studies import CalibrationSection
+from .studies import CalibrationSection, OptimizeSection
 from .transient import RotorTransientSection, TransientSection
 
 FrequencyRange = Range  # {start, stop, count}
@@ -390,6 +390,8 @@ def deck_model() -> type[BaseModel]:
                                                      "applies it too.")),
         calibration=(Optional[CalibrationSection], Field(None, description=_first_paragraph(
             CalibrationSection.__doc__) + " Not run by `spindlesim run`.")),
+        optimize=(Optional[OptimizeSection], Field(None, description=_first_paragraph(
+            OptimizeSection.__doc__) + " Not run by `spindlesim run`.")),
         sweep=(Optional[SweepSection], Field(None, description="A parameter study: `spindlesim sweep DECK` runs "
                                              "`analysis` for every case of the parameters' values (not run by "
                                              "`spindlesim run`).")),

@@ -1,4 +1,5 @@
-"""Deck sections of the studies that change deck values by key path: ``calibration:`` (``spindlesim calibrate``).
+"""Deck sections of the studies that change deck values by key path: ``calibration:`` (``spindlesim calibrate``)
+and ``optimize:`` (``spindlesim optimize``).
 
 A key path walks the deck as ``sweep`` does (``sweep/cases.py``): mapping keys by name, list items by 0-based
 index or, for named items (bearings, disks, tools), by their ``name``: ``tool.joint.translational_N_m``,
@@ -8,7 +9,7 @@ is checked when the study starts, against the deck (a located error naming the e
 
 from __future__ import annotations
 
-from typing import Annotated, Optional
+from typing import Annotated, Optional, Union
 
 from pydantic import Field, model_validator
 
@@ -60,3 +61,99 @@ class CalibrationSection(DeckModel):
         if self.band_hz is not None and not self.band_hz[0] < self.band_hz[1]:
             raise ValueError("band_hz: the low end must be below the high end")
         return self
+
+
+# ---- optimize: (spindlesim optimize) ----------------------------------------------------------------------
+
+#: a value a discrete variable may take: a number or a word (e.g. a preload kind)
+Choice = Union[AnyNumber, Annotated[str, Field(min_length=1, max_length=100)]]
+
+
+class TiedPath(DeckModel):
+    """A deck value moved with a variable: its deck value plus factor times the variable's change."""
+
+    path: Annotated[str, Field(min_length=1, max_length=500)]
+    """Deck key path of the tied value (as `sweep` writes it)."""
+    factor: AnyNumber = 1.0
+    """Change of the tied value per unit change of the variable: -1 keeps the sum of the two (a node moved
+    between two elements, the shaft's length kept), 1 keeps them equal."""
+
+
+class OptimizeVariable(DeckModel):
+    """A deck value the optimisation chooses: continuous between min and max, or one of `values`."""
+
+    path: Annotated[str, Field(min_length=1, max_length=500)]
+    """Deck key path of the value, as `sweep` writes it: bearings.front.preload.axial_um, shaft.elements.4.2."""
+    min: Optional[AnyNumber] = None
+    """Lower bound of a continuous variable (the key's unit)."""
+    max: Optional[AnyNumber] = None
+    """Upper bound of a continuous variable (the key's unit); greater than min."""
+    values: Optional[Annotated[list[Choice], Field(min_length=2, max_length=100)]] = None
+    """The values a discrete variable chooses from (instead of min and max), e.g. contact angles [15, 25]."""
+    tied: Annotated[list[TiedPath], Field(max_length=20)] = []
+    """Deck values moved with this one (each its deck value + factor x the variable's change); continuous
+    variables only."""
+
+    @model_validator(mode="after")
+    def _kind(self) -> "OptimizeVariable":
+        if self.values is None and (self.min is None or self.max is None):
+            raise ValueError("give min and max (a continuous variable) or values (a discrete one)")
+        if self.values is not None and (self.min is not None or self.max is not None):
+            raise ValueError("give either min and max or values, not both")
+        if self.values is not None and self.tied:
+            raise ValueError("tied values follow a continuous variable (min and max), not a discrete one")
+        return self
+
+
+ResultName = Annotated[str, Field(min_length=1, max_length=100)]
+
+
+class OptimizeObjective(DeckModel):
+    """One objective: `maximize: NAME` or `minimize: NAME`, a named result (docs/deck-format.md, optimize)."""
+
+    maximize: Optional[ResultName] = None
+    """A named result to make as large as possible."""
+    minimize: Optional[ResultName] = None
+    """A named result to make as small as possible."""
+
+    @model_validator(mode="after")
+    def _one(self) -> "OptimizeObjective":
+        if (self.maximize is None) == (self.minimize is None):
+            raise ValueError("give one of maximize: NAME or minimize: NAME")
+        return self
+
+
+class OptimizeConstraint(DeckModel):
+    """A named result held within bounds: min, max or both."""
+
+    name: ResultName
+    """The named result (docs/deck-format.md, optimize)."""
+    min: Optional[AnyNumber] = None
+    """The smallest value allowed (the result's unit)."""
+    max: Optional[AnyNumber] = None
+    """The largest value allowed (the result's unit)."""
+
+    @model_validator(mode="after")
+    def _bound(self) -> "OptimizeConstraint":
+        if self.min is None and self.max is None:
+            raise ValueError("give min, max or both")
+        if self.min is not None and self.max is not None and not self.min < self.max:
+            raise ValueError("max must be greater than min")
+        return self
+
+
+class OptimizeSection(DeckModel):
+    """Design optimisation over deck values (`spindlesim optimize`): one objective, an optimum; two or three, a
+    Pareto front; named results as objectives and constraints, each computed by the existing analyses at the
+    deck's operating speed; writes optimize.h5 and optimized.yaml (pareto/ for a front)."""
+
+    variables: Annotated[list[OptimizeVariable], Field(min_length=1, max_length=20)]
+    """The deck values chosen, each a key path with bounds or a list of values."""
+    objectives: Annotated[list[OptimizeObjective], Field(min_length=1, max_length=3)]
+    """One objective (an optimum) or two or three (a Pareto front)."""
+    constraints: Annotated[list[OptimizeConstraint], Field(max_length=20)] = []
+    """Named results held within bounds (a design outside is infeasible)."""
+    budget: Annotated[int, Field(ge=4, le=100_000)] = 200
+    """The most evaluations (designs analysed) the study spends."""
+    seed: Annotated[int, Field(ge=0, le=2**31 - 1)] = 1
+    """Seed of the random choices of the global and evolutionary methods (the same seed: the same study)."""

@@ -116,3 +116,10 @@ class Rotor:
     @property
     def speed_rad_s(self) -> float:
         return self.speed_rpm * np.pi / 30.0
+
+    @property
+    def mass_kg(self) -> float:
+        """Mass of every beam element (shaft, holder, tool) and disk."""
+        e = self.elements
+        beams = float(np.sum(e.density_kg_m3 * e.area_m2 * e.length_m))
+        return beams + float(sum(d.mass_kg for d in self.disks))

@@ -46,6 +46,9 @@ DONE, INCOMPLETE, FAILED, INTERRUPTED, NOT_RUN = "finished", "incomplete", "fail
 #: what a figure shows, by file stem (a stem ending in a bearing name matches its prefix)
 CAPTIONS: dict[str, str] = {
     "static_deflection": "Static deflection of the rotor under the applied loads, with the bearing reactions",
+    "optimize_history": "Optimisation: each objective over the evaluations, the best feasible design so far",
+    "optimize_parallel": "Optimisation: parallel coordinates of the feasible designs, the best or the Pareto set",
+    "optimize_pareto": "Optimisation: the Pareto front with the deck's own design",
     "modal_shapes": "Damped mode shapes at the operating speed",
     "campbell": "Campbell diagram: natural frequencies over speed, 1x line and critical speeds",
     "campbell_frozen": "Campbell diagram with the bearings frozen at their state at rest",

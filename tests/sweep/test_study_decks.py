@@ -9,7 +9,10 @@ from spindlesim.deck import load_deck, parse_deck
 from spindlesim.sweep import build_cases
 from spindlesim.sweep.cases import parse_values
 
-STUDIES = sorted((Path(__file__).parents[2] / "decks" / "studies").glob("*.yaml"))
+ALL_STUDIES = sorted((Path(__file__).parents[2] / "decks" / "studies").glob("*.yaml"))
+#: the sweep studies (the others are optimisation studies: tests/sweep/test_optimize.py)
+STUDIES = [p for p in ALL_STUDIES if "\nsweep:" in p.read_text()]
+OPTIMIZE = [p for p in ALL_STUDIES if "\noptimize:" in p.read_text()]
 
 
 @pytest.mark.parametrize("path", STUDIES, ids=[p.stem for p in STUDIES])
@@ -38,3 +41,11 @@ def test_seed003_speed_study_runs_and_coefficients_change(tmp_path):
     table = scalar_table(res)
     key = next(k for k in table if k.endswith("front/sommerfeld"))
     assert table[key][1] > table[key][0]  # faster: higher Sommerfeld number (lighter relative load)
+
+
+@pytest.mark.parametrize("path", OPTIMIZE, ids=[p.stem for p in OPTIMIZE])
+def test_optimize_study_decks_pass_their_checks(path):
+    from spindlesim.sweep.optimize_inputs import check_problem
+
+    problem = check_problem(load_deck(path))
+    assert problem.variables and problem.objectives

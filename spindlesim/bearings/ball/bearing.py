@@ -384,6 +384,10 @@ class BallBearing(BearingBase):
         q, ev, its = self._equilibrium(load, float(speed), float(cage_angle), q0, held=held, work=work)
         return self._state(q, ev, float(speed), float(cage_angle), its, load, held)
 
+    def rating_life_Mrev(self, speed, static_load) -> float | None:
+        """ISO 281 basic rating life of the set in its equilibrium under ``static_load`` at ``speed`` [rad/s]."""
+        return self.solve(_five(static_load), float(speed)).life_L10_iso281_Mrev
+
     def at(self, q, speed: float = 0.0, cage_angle: float = 0.0, work: Work | None = None) -> BallState:
         """The state at a given inner-ring displacement q (5): evaluated, nothing solved (``work``: as in
         :meth:`solve`)."""
