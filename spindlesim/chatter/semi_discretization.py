@@ -175,6 +175,12 @@ N_MULTIPLIERS = 6
 ARNOLDI_BASIS = (13, 30)
 
 
+#: Arnoldi restarts before the dense eigenvalues take over: a converging case needs a few, while a monodromy whose
+#: leading multipliers crowd together (a short tool's high-frequency mode: 400 steps, 800 states) ran ARPACK's
+#: budget of 50 N restarts for minutes on one evaluation; the dense QR of that matrix takes about a second
+ARNOLDI_RESTARTS = 60
+
+
 def _arnoldi_basis(n_states: int) -> int:
     return int(np.clip(n_states + 12, *ARNOLDI_BASIS))
 
@@ -194,7 +200,7 @@ def _largest_multipliers(Phi: np.ndarray, n_states: int) -> np.ndarray:
     v0 = np.ones(N)
     for e in range(E):
         try:
-            ev = eigs(Phi[e], k=k, which="LM", return_eigenvectors=False, tol=1e-12, v0=v0, maxiter=50 * N,
+            ev = eigs(Phi[e], k=k, which="LM", return_eigenvectors=False, tol=1e-12, v0=v0, maxiter=ARNOLDI_RESTARTS,
                       ncv=_arnoldi_basis(n_states))
         except ArpackNoConvergence:
             ev = np.linalg.eigvals(Phi[e])
@@ -206,7 +212,7 @@ def _dominant_eigenpair(Phi: np.ndarray, n_states: int) -> tuple[complex, np.nda
     """Eigenvalue of largest modulus and its eigenvector (Arnoldi above 64 states, as for rho)."""
     if len(Phi) > 64:
         try:
-            ev, V = eigs(Phi, k=N_MULTIPLIERS, which="LM", tol=1e-12, v0=np.ones(len(Phi)), maxiter=50 * len(Phi),
+            ev, V = eigs(Phi, k=N_MULTIPLIERS, which="LM", tol=1e-12, v0=np.ones(len(Phi)), maxiter=ARNOLDI_RESTARTS,
                          ncv=_arnoldi_basis(n_states))
             j = int(np.argmax(np.abs(ev)))
             return complex(ev[j]), V[:, j]
