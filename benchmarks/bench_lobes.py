@@ -45,8 +45,9 @@ def main() -> None:
     ]
     got = {}
     print(f"{'command':30s} {'median s':>9s} {'min':>7s} {'max':>7s} {'cpu s':>7s}", flush=True)
-    for name, argv in rows:
-        med, lo, hi, cpu, rc, err = time_process(argv, tmp / "out", args.runs)
+    for name, argv in rows:  # the ten tools once, without a warm-up: about three minutes a run
+        long = name.startswith("tools")
+        med, lo, hi, cpu, rc, err = time_process(argv, tmp / "out", 1 if long else args.runs, warmup=0 if long else 1)
         if med is None:
             print(f"{name:30s} failed (exit {rc}): {err}", flush=True)
             continue

@@ -21,6 +21,7 @@ ARGS = {
     "bench_ross.py": ["--repeat", "3"] + (["--no-install"] if os.environ.get("SPINDLESIM_BENCH_NO_ROSS") else []),
     "bench_process.py": ["--runs", "5"],
     "bench_campbell_fluidfilm.py": ["--repeat", "2"],
+    "bench_lobes.py": ["--runs", "1"],
 }
 env = dict(os.environ)
 for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):

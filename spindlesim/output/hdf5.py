@@ -33,7 +33,7 @@ import logging
 import os
 import platform
 import sys
-import tempfile
+import secrets
 import threading
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
@@ -142,15 +142,31 @@ def atomic(path: str | Path, suffix: str = ".tmp") -> Iterator[str]:
     (:func:`publish`) as ``path``, on any failure removed: a reader never sees a half-written file."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=suffix, dir=path.parent)
-    os.close(fd)
+    while True:  # the name first, then the file (as mkstemp, exclusive, 0600): a Ctrl-C at any point after
+        # the name is chosen finds it in the handler below (with mkstemp the file existed before its name was
+        # returned, and one interrupted in between was left behind)
+        tmp = str(path.parent / f"{path.name}.{secrets.token_hex(4)}{suffix}")
+        try:
+            os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600))
+            break
+        except FileExistsError:
+            continue
+        except BaseException:
+            _unlink(tmp)
+            raise
     try:
         yield tmp
         publish(tmp, path)
     except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+        _unlink(tmp)
         raise
+
+
+def _unlink(tmp: str) -> None:
+    try:
+        os.unlink(tmp)
+    except FileNotFoundError:
+        pass
 
 
 def write_text_atomic(path: str | Path, text: str) -> Path:

@@ -20,7 +20,6 @@ from __future__ import annotations
 import json
 import logging
 import os
-import tempfile
 import time
 import traceback
 from concurrent.futures import as_completed
@@ -28,7 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
-from ..output.hdf5 import publish
+from ..output.hdf5 import atomic
 from ..runs.status import IncompleteRun, remove_stale_temporaries
 from .cases import Case
 from .execution import make_executor, sigint_ignored
@@ -39,15 +38,9 @@ DONE, FAILED, INCOMPLETE, INTERRUPTED, NOT_RUN = "done", "failed", "incomplete",
 
 
 def _write_json_atomic(path: Path, payload: dict) -> None:
-    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w") as fh:
+    with atomic(path) as tmp:  # published with the umask's mode: the case files are as readable as the rest
+        with open(tmp, "w") as fh:
             json.dump(payload, fh, indent=1, default=str)
-        publish(tmp, path)  # mkstemp makes 0600; the case files are as readable as the rest
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 def _h5_complete(path: Path) -> bool:
