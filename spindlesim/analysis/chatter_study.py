@@ -16,7 +16,7 @@ from typing import Any, Callable
 
 from ..chatter import run_chatter, stability_lobes
 from ..chatter.section import ChatterSpec
-from ..chatter.state_space import for_simulation
+from ..chatter.tool import ToolSeries, for_simulation
 from .points import OperatingPoints
 from .tool_point import coefficients_change, tool_point_model, tool_point_series
 
@@ -29,15 +29,21 @@ COMPARE_EVERY = 4
 @dataclass(frozen=True, eq=False)
 class ChatterStudy:
     """The lobes and their checks (``result``: a :class:`~spindlesim.chatter.ChatterResult`), the section as run
-    (``spec``, the added simulations included), the comparison at the deck speed (``at_deck``), the tool-point
-    model shown (``deck_tool``: the deck speed's, or the one FRF used) and where the FRF came from (``info``:
-    frf_source, frf_at_each_speed and why, deck_speed_rpm, node, model)."""
+    (``spec``, the added simulations included), the comparison at the deck speed (``at_deck``), the rotor's
+    tool-point model at the deck speed (``deck_tool``; None for a tap test or a file) and where the FRF came
+    from (``info``: frf_source, frf_at_each_speed and why, deck_speed_rpm, node, model)."""
 
     result: Any
     spec: ChatterSpec
     at_deck: Any = None
     deck_tool: Any = None
     info: dict = field(default_factory=dict)
+
+    @property
+    def shown_tool(self):
+        """The tool point whose FRF the file holds and the figure draws: the deck speed's, else the first of the
+        series the lobes used (the one tool of a tap test or a file)."""
+        return self.deck_tool if self.deck_tool is not None else self.result.tool.first
 
     # ---- named results --------------------------------------------------------------------------------
     @property
@@ -52,7 +58,8 @@ class ChatterStudy:
 
 
 def _rotor_tools(points: OperatingPoints, spec: ChatterSpec, deck_rpm: float, exact: bool, progress):
-    """(tool for the lobes, tool at the deck speed, provenance) from the rotor at its operating points."""
+    """(tool series for the lobes, tool at the deck speed, provenance) from the rotor at its operating points; a
+    series per speed computes the tool-point models at the speeds added in unresolved pockets."""
     rotor = points.rotor
     per_speed, reason = spec.frf_at_each_speed, "deck"
     if per_speed is None:
@@ -65,13 +72,14 @@ def _rotor_tools(points: OperatingPoints, spec: ChatterSpec, deck_rpm: float, ex
         series = tool_point_series(points, spec.speeds_rpm, exact=exact, progress=progress)
         info.update(node=series.node, model=series.model)
         deck_tool = tool_point_model(points, deck_rpm) if deck_rpm > 0 else series.models[0]
-        return list(series.models), deck_tool, info
+        more = lambda speeds: tool_point_series(points, speeds, exact=exact).models  # noqa: E731
+        return ToolSeries(series.speeds_rpm, series.models, more), deck_tool, info
     if deck_rpm <= 0:
         raise ValueError("chatter with the FRF at the deck speed needs operating.speed_rpm > 0 "
                          "(or frf_at_each_speed: true)")
     deck_tool = tool_point_model(points, deck_rpm)
     info.update(node=(rotor.tool_tip + 1) if rotor.tool_tip is not None else 1, model="full state space")
-    return deck_tool, deck_tool, info
+    return ToolSeries.constant(deck_tool), deck_tool, info
 
 
 def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck_rpm: float = 0.0,
@@ -85,20 +93,17 @@ def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck
     sims = tuple(spec.simulation_points) + tuple((float(s), float(a)) for s, a in simulate)
     info: dict[str, Any] = {"frf_source": spec.frf_source}
     deck_tool = None
-    tools_at: Callable | None = None
     if spec.frf_source == "rotor":
         if points is None:
             raise ValueError("frf: rotor needs the rotor's operating points")
         tool, deck_tool, info = _rotor_tools(points, spec, float(deck_rpm), exact, progress)
-        if isinstance(tool, list):  # the tool-point model at speeds added in unresolved pockets
-            tools_at = lambda speeds: tool_point_series(points, speeds, exact=exact).models  # noqa: E731
     else:
-        tool = spec.tool
+        tool = ToolSeries.constant(spec.tool)
     opts = dict(spec.method_options)
     if stability_map:
         opts["stability_map"] = True
     spec = dataclasses.replace(spec, simulation_points=sims, method_options=MappingProxyType(opts))
-    result = run_chatter(spec, tool, simulation_tool=for_simulation(tool) if sims else None, tools_at=tools_at,
+    result = run_chatter(spec, tool, simulation_tool=tool.mapped(for_simulation) if sims else None,
                          speed_limit_rpm=speed_limit_rpm)
     at_deck = None
     if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed

@@ -3,7 +3,8 @@
 Pure physics on FRFs and state-space models (no deck loading, no output): the rotor model, the
 deck loader and the ``spindlesim chatter`` command build on it.
 
-* inputs: :class:`Mode`, :class:`ToolPointFrf`, :class:`ToolPointModel` (A, B, C),
+* inputs: :class:`Mode`, :class:`ToolPointFrf`, :class:`ToolPointModel` (A, B, C), both tool points of
+  one protocol, and :class:`ToolSeries`, the tool point at each speed (:mod:`spindlesim.chatter.tool`);
   :func:`read_frf` (CSV, UFF 58), :func:`fit_tool_point_model`;
 * processes: :class:`TurningProcess`, :class:`MillingProcess`;
 * methods: :func:`stability_lobes` (driver) over :func:`turning_lobes` (Tlusty, oriented FRF),
@@ -48,6 +49,9 @@ _EXPORTS = {
     "run_chatter": "stability",
     "stability_lobes": "stability",
     "ToolPointModel": "state_space",
+    "ToolPoint": "tool",
+    "ToolSeries": "tool",
+    "tool_series": "tool",
     "oriented_frf": "turning",
     "turning_lobes": "turning",
     "turning_parametric_lobes": "turning",
@@ -60,7 +64,7 @@ __getattr__, __dir__ = lazy_exports(__name__, _EXPORTS)
 
 
 __all__ = [
-    "Mode", "ToolPointFrf", "ToolPointModel", "ModalFit", "fit_tool_point_model",
+    "Mode", "ToolPointFrf", "ToolPointModel", "ToolPoint", "ToolSeries", "tool_series", "ModalFit", "fit_tool_point_model",
     "MillingProcess", "TurningProcess",
     "FrfFileError", "read_frf", "read_frf_csv", "read_frf_uff", "write_frf_csv", "combine_frfs",
     "LobeCurve", "LobeDiagram", "SimulationResult", "StabilityMap",

@@ -60,7 +60,8 @@ class ToolPointFrf:
     A measured FRF may carry its ``coherence[f, 2, 2]`` (0 to 1; NaN for a term not measured; None: no term
     has one) and the decay [1/s] of an exponential window its measurement applied, per direction (x, y):
     the window moved every pole of that direction by -decay, i.e. it added decay / w_n to every damping
-    ratio (``spindlesim fitmodes`` takes it off; a sampled FRF used as it is keeps it)."""
+    ratio (``spindlesim fitmodes`` takes it off; a sampled FRF used as it is keeps it).  A tool point of the
+    protocol of :mod:`spindlesim.chatter.tool` (no state space: the methods that need one fit it)."""
 
     frequency_hz: np.ndarray
     H: np.ndarray
@@ -100,6 +101,19 @@ class ToolPointFrf:
     @property
     def omega(self) -> np.ndarray:
         return 2 * np.pi * self.frequency_hz
+
+    # -- the tool-point protocol (spindlesim/chatter/tool.py) -----------------------------------------
+    @property
+    def state_space(self) -> None:
+        return None
+
+    def frf(self, frequency_hz: np.ndarray | None = None) -> "ToolPointFrf":
+        """Itself; on ``frequency_hz``, interpolated (:meth:`interpolated`)."""
+        return self if frequency_hz is None else self.interpolated(frequency_hz)
+
+    def receptance(self, omega: np.ndarray) -> np.ndarray:
+        """H [len(omega), 2, 2] at angular frequencies ``omega`` [rad/s] inside the band (:meth:`interpolated`)."""
+        return self.interpolated(np.atleast_1d(np.asarray(omega, float)) / (2 * np.pi)).H
 
     def band(self, f_min_hz: float | None = None, f_max_hz: float | None = None) -> "ToolPointFrf":
         """The samples within [f_min_hz, f_max_hz]."""

@@ -16,7 +16,7 @@ from .frf import DIRECTIONS, ToolPointFrf
 from .pockets import Pocket
 from .process import METHOD_TITLES
 from .results import LobeDiagram, SimulationResult
-from .state_space import ToolPointModel
+from .tool import ToolPoint
 
 __all__ = ["lobe_diagram_figure", "frf_figure", "stability_map_figure", "simulation_figure"]
 
@@ -113,13 +113,13 @@ def _isolated_points(ax, x: np.ndarray, y: np.ndarray) -> None:
         ax.plot(x[alone], y[alone], ".", color="C0", ms=5, gid="isolated")
 
 
-def frf_figure(tool: ToolPointFrf | ToolPointModel, terms: Sequence[str] = ("xx", "yy"),
+def frf_figure(tool: ToolPoint, terms: Sequence[str] = ("xx", "yy"),
                title: str | None = None) -> Figure:
     """Real and imaginary parts (left) and magnitude and phase (right) of the chosen terms [m/N -> um/N];
     xx solid, yy dashed, cross terms dotted (equal xx and yy stay readable); the frequency axis ends 30 %
     above the highest peak of a direct term that reaches a tenth of the largest one (the modes that can
     chatter), not at the end of the FRF's grid."""
-    frf = tool.frf() if isinstance(tool, ToolPointModel) else tool
+    frf = tool.frf()
     fig = _figure(10.0, 6.0)
     (a_re, a_mag), (a_im, a_ph) = fig.subplots(2, 2, sharex=True)
     end = modes_of_interest_hz(frf)

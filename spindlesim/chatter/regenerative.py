@@ -23,9 +23,8 @@ from typing import Callable
 
 import numpy as np
 
-from .frf import ToolPointFrf
 from .results import LobeDiagram, lobe_diagram_from_lobes
-from .state_space import Tool, ToolPointModel, ToolSource, tool_at_speeds
+from .tool import ToolPoint, ToolSource, tool_series
 
 __all__ = ["phase_eps", "limits_at_delays", "parametric_lobes", "eigen_branches", "sample_tool",
            "frequency_domain_diagram"]
@@ -139,15 +138,10 @@ def parametric_lobes(omega: np.ndarray, lam: np.ndarray, lobes, periods_per_rev:
     return out
 
 
-def sample_tool(tool: Tool, frequency_hz: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """(omega [F] rad/s, H [F, 2, 2]): a model on its mode-clustered grid (or the given
-    frequencies), a sampled FRF on its own samples (zero frequency dropped)."""
-    if isinstance(tool, ToolPointModel):
-        f = tool.frequency_grid() if frequency_hz is None else np.asarray(frequency_hz, float)
-        return 2 * np.pi * f, tool.receptance(2 * np.pi * f)
-    if not isinstance(tool, ToolPointFrf):
-        raise TypeError(f"expected a ToolPointModel or ToolPointFrf, got {type(tool).__name__}")
-    frf = tool if frequency_hz is None else tool.interpolated(frequency_hz)
+def sample_tool(tool: ToolPoint, frequency_hz: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """(omega [F] rad/s, H [F, 2, 2]): the tool's FRF on its own grid (a model's mode-clustered grid, a sampled
+    FRF's samples) or on the given frequencies, zero frequency dropped."""
+    frf = tool.frf(frequency_hz)
     keep = frf.frequency_hz > 0
     return frf.omega[keep], frf.H[keep]
 
@@ -163,12 +157,15 @@ def frequency_domain_diagram(process, tool: ToolSource, speeds_rpm: np.ndarray,
     """
     speeds = np.asarray(speeds_rpm, float)
     tau = process.tooth_period_s(speeds)
-    tools, per_speed = tool_at_speeds(tool, speeds)
+    series = tool_series(tool, speeds)
+    per_speed = series.speed_dependent
     if not per_speed:
-        omega, H = sample_tool(tools[0], frequency_hz)
+        omega, H = sample_tool(series.first, frequency_hz)
         lobes, depth, freq = limits_at_delays(omega, branches(H), tau, max_lobes)
     else:
         from .semi_discretization import parallel_map  # the speeds on the worker threads
+
+        tools = series.along(speeds)
 
         def one(s):
             omega, H = sample_tool(tools[s], frequency_hz)

@@ -43,7 +43,7 @@ from scipy.optimize import minimize_scalar
 from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
 from .semi_discretization import N_MULTIPLIERS, SdProblem, workers
-from .state_space import ToolSource, as_state_space, tool_at_speeds
+from .tool import ToolSeries, ToolSource, as_state_space, tool_series
 
 __all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_STEPS"]
 
@@ -368,8 +368,9 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     from .zero_order import zero_order_lobes  # depth range and the model-reduction check
 
     speeds = np.asarray(speeds_rpm, float)
-    tools, per_speed = tool_at_speeds(tool, speeds)
-    used = tools if per_speed else tools[:1]
+    series = tool_series(tool, speeds)
+    per_speed = series.speed_dependent
+    used = series.along(speeds) if per_speed else [series.first]
     models = [as_state_space(t, **(fit_options or {})) for t in used]
     notes = []
 
@@ -380,7 +381,8 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     if model_note:
         notes.append(model_note)
     want_map = stability_map or depths_m is not None
-    zoa = zero_order(models if per_speed else models[0])  # the default depth range and the searches' guesses
+    # the default depth range and the searches' guesses
+    zoa = zero_order(ToolSeries(speeds, tuple(models)) if per_speed else ToolSeries.constant(models[0]))
     if depths_m is not None:
         grid = _Depths(np.sort(np.asarray(depths_m, float)), float(np.max(depths_m)), 0)
     elif depth_max_m is not None:

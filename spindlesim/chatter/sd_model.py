@@ -120,7 +120,7 @@ def _depth_curve(K0: np.ndarray, H: np.ndarray) -> np.ndarray:
     return np.where(re < 0, -0.5 / np.where(re < 0, re, -1.0), np.inf)
 
 
-def models_for_sd(models: list, K0: np.ndarray, span: float = 3.0) -> tuple[list, str]:
+def models_for_sd(models: list[ToolPointModel], K0: np.ndarray, span: float = 3.0) -> tuple[list, str]:
     """The models the semi-discretization runs on (one, or one per speed) and a note saying which.
 
     The check: at every frequency of each model's mode-clustered grid where the depth curve
@@ -131,7 +131,7 @@ def models_for_sd(models: list, K0: np.ndarray, span: float = 3.0) -> tuple[list
     curve is higher the dropped modes weigh more (milling spindle: 9 modes agree to 0.16 % up to
     3 x the minimum, 2.4 % up to 8 x; the zero-order limits at 200 speeds to 0.02 % median, 1.4 %
     at the tip of the highest pocket, 7 x the minimum)."""
-    if not models or any(not isinstance(m, ToolPointModel) or m.A.shape[0] <= REDUCE_ABOVE_STATES for m in models):
+    if not models or any(m.A.shape[0] <= REDUCE_ABOVE_STATES for m in models):
         return models, ""
     from .semi_discretization import parallel_map  # the speeds' models on the worker threads
 

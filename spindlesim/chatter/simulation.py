@@ -41,7 +41,7 @@ import numpy as np
 
 from ._expm import expm_batch
 from .results import DECAYED, DIED_OUT, STABLE_GROWTH, SimulationResult
-from .state_space import Tool, as_state_space
+from .tool import ToolPoint, as_state_space
 
 __all__ = ["simulate"]
 
@@ -154,7 +154,7 @@ def _default_steps(model, tau: float) -> int:
     return int(2 * np.ceil(max(100, 40 * f_top * tau) / 2))
 
 
-def simulate(process, tool: Tool, speed_rpm: float, depth_m: float, *, tooth_periods: int = 400,
+def simulate(process, tool: ToolPoint, speed_rpm: float, depth_m: float, *, tooth_periods: int = 400,
              steps_per_period: int | None = None, fit_options: dict | None = None) -> SimulationResult:
     """Integrate the cut at ``speed_rpm`` and axial depth ``depth_m`` for ``tooth_periods`` periods."""
     if not (np.isfinite(depth_m) and depth_m > 0 and np.isfinite(speed_rpm) and speed_rpm > 0):

@@ -22,7 +22,7 @@ from .results import LobeDiagram, SimulationResult
 from .sd_lobes import semi_discretization_lobes
 from .section import ChatterSpec
 from .simulation import simulate
-from .state_space import Tool, ToolSource
+from .tool import ToolSeries, ToolSource, tool_series
 from .turning import turning_lobes
 from .zero_order import zero_order_lobes
 
@@ -40,12 +40,14 @@ METHODS: dict[str, Callable[..., LobeDiagram]] = {
 def stability_lobes(process, tool: ToolSource, speeds_rpm, method: str = "auto", **options) -> LobeDiagram:
     """Lobe diagram of ``process`` for the tool-point ``tool`` at ``speeds_rpm``.
 
-    ``tool``: a :class:`ToolPointModel` or :class:`ToolPointFrf` (same at every speed), a
-    sequence with one per speed, or a callable ``tool(speed_rpm)``.  ``options`` go to the
+    ``tool``: a :class:`~spindlesim.chatter.tool.ToolSeries`, or what :func:`~spindlesim.chatter.tool.tool_series`
+    makes one of (a model or FRF the same at every speed, a sequence with one per speed, a callable
+    ``tool(speed_rpm)``).  ``options`` go to the
     method (e.g. ``steps``, ``order``, ``n_depths``, ``depth_max_m`` for the semi-discretization;
     the others ignore what they do not use).
     """
-    diagram = METHODS[process.method_for(method)](process, tool, np.asarray(speeds_rpm, float), **options)
+    speeds = np.asarray(speeds_rpm, float)
+    diagram = METHODS[process.method_for(method)](process, tool_series(tool, speeds), speeds, **options)
     note = process.method_note(method)
     if "CAUTION" in note:
         log.warning("%s", note)
@@ -55,12 +57,12 @@ def stability_lobes(process, tool: ToolSource, speeds_rpm, method: str = "auto",
 @dataclass(frozen=True, eq=False)
 class ChatterResult:
     """The lobe diagram, its stability pockets (deepest first) and the time-domain checks; ``tool`` the
-    tool-point model or FRF the diagram used (a list: one per diagram speed, refined speeds included)."""
+    tool-point series the diagram used (one per diagram speed, refined speeds included, or one at every speed)."""
 
     diagram: LobeDiagram
     simulations: tuple[SimulationResult, ...]
     pockets: tuple[Pocket, ...] = ()
-    tool: ToolSource | None = None
+    tool: ToolSeries | None = None
     #: the spindle's thermal speed limit [rpm]: speeds above it are never recommended nor the minimum's
     speed_limit_rpm: float | None = None
 
@@ -84,54 +86,41 @@ class ChatterResult:
                        limit_depth_m=np.asarray(dg.limit_depth_m)[keep]).minimum
 
 
-def _tool_at(tool: ToolSource, speeds: np.ndarray, speed: float) -> Tool:
-    if callable(tool):
-        return tool(float(speed))
-    if isinstance(tool, (list, tuple)):
-        return tool[int(np.argmin(np.abs(speeds - speed)))]
-    return tool
-
-
 def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
                 simulation_tool: ToolSource | None = None,
-                tools_at: Callable[[np.ndarray], list] | None = None,
                 speed_limit_rpm: float | None = None) -> ChatterResult:
     """Lobe diagram and the requested time-domain checks of a built ``chatter:`` section.
 
-    ``tool`` replaces ``spec.tool`` (needed when the deck says ``frf: rotor``);
-    ``simulation_tool`` (e.g. a truncated rotor model) serves the time-domain simulations (the
-    semi-discretization reduces a large model itself, checked on the zero-order lobes).
-    ``tools_at(speeds)`` gives one tool per speed at speeds off the grid, for the pockets the grid does
-    not resolve (:mod:`~spindlesim.chatter.refine`); a tool that is the same at every speed, or a
-    callable one, needs none, and a list without it is not refined.  ``speed_limit_rpm``: the spindle's thermal
-    speed limit (the recommendation and the minimum stay below it).
+    ``tool`` replaces ``spec.tool`` (needed when the deck says ``frf: rotor``): a tool series or what
+    :func:`~spindlesim.chatter.tool.tool_series` makes one of; ``simulation_tool`` (e.g. a truncated rotor
+    model) serves the time-domain simulations (the semi-discretization reduces a large model itself, checked
+    on the zero-order lobes), each at the tool :meth:`~spindlesim.chatter.tool.ToolSeries.near` its speed.
+    The pockets the grid does not resolve are solved at more speeds (:mod:`~spindlesim.chatter.refine`) when
+    the series has the tool at any speed (one at every speed, or ``more`` to compute them); a series of one
+    tool per grid speed without ``more`` is not refined.  ``speed_limit_rpm``: the spindle's thermal speed
+    limit (the recommendation and the minimum stay below it).
     """
     src = tool if tool is not None else spec.tool
     if src is None:
         raise ValueError("frf: rotor needs the rotor's tool-point model (pass tool=...)")
-    timed = simulation_tool if simulation_tool is not None else src
     options = dict(spec.method_options)
     speeds = np.asarray(spec.speeds_rpm, float)
-    diagram = stability_lobes(spec.process, src, speeds, spec.method, **options)
-    per_speed = isinstance(src, (list, tuple))
-    added: dict[float, Tool] = {}
-    if not per_speed or tools_at is not None:
+    series = tool_series(src, speeds)
+    timed = series if simulation_tool is None else tool_series(simulation_tool, speeds)
+    diagram = stability_lobes(spec.process, series, speeds, spec.method, **options)
+    used = series
+    if series.extendable:
         same_cap = dict(options) | {"stability_map": False}  # the added speeds: the map stays the grid's
         if np.isfinite(diagram.depth_cap_m) and all(options.get(k) is None for k in ("depths_m", "depth_max_m")):
             same_cap["depth_cap_m"] = diagram.depth_cap_m  # the added speeds searched as deep as the grid's
 
         def solve(extra: np.ndarray) -> LobeDiagram:
-            at = src
-            if per_speed:
-                at = list(tools_at(extra))
-                added.update(zip(extra.tolist(), at))
-            return stability_lobes(spec.process, at, extra, spec.method, **same_cap)
+            nonlocal used
+            added = series.at(extra)
+            used = used.joined(added)
+            return stability_lobes(spec.process, added, extra, spec.method, **same_cap)
 
         diagram = refine_pockets(diagram, solve)
-    merged = src
-    if per_speed and added:
-        by_speed = dict(zip(speeds.tolist(), src)) | added
-        merged = [by_speed[float(s)] for s in diagram.speed_rpm]
-    sims = tuple(simulate(spec.process, _tool_at(timed, spec.speeds_rpm, s), s, a, **dict(spec.simulation_options))
+    sims = tuple(simulate(spec.process, timed.near(s), s, a, **dict(spec.simulation_options))
                  for s, a in spec.simulation_points)
-    return ChatterResult(diagram, sims, stability_pockets(diagram), merged, speed_limit_rpm)
+    return ChatterResult(diagram, sims, stability_pockets(diagram), used.at(diagram.speed_rpm), speed_limit_rpm)

@@ -16,14 +16,14 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Callable, Sequence, Union
+from typing import Sequence
 
 import numpy as np
 import scipy.linalg as sla
 
 from .frf import Mode, ToolPointFrf
 
-__all__ = ["ToolPointModel", "ModeSummary", "Tool", "ToolSource", "tool_at_speeds", "as_state_space", "for_simulation"]
+__all__ = ["ToolPointModel", "ModeSummary"]
 
 log = logging.getLogger(__name__)
 _COND_LIMIT = 1e10
@@ -44,7 +44,8 @@ class ModeSummary:
 
 @dataclass(frozen=True, eq=False)
 class ToolPointModel:
-    """Real state-space tool-point model; ``A`` [n, n], ``B`` [n, 2], ``C`` [2, n] (SI)."""
+    """Real state-space tool-point model; ``A`` [n, n], ``B`` [n, 2], ``C`` [2, n] (SI).  A tool point of the
+    protocol of :mod:`spindlesim.chatter.tool` (its ``state_space`` is itself)."""
 
     A: np.ndarray
     B: np.ndarray
@@ -97,6 +98,10 @@ class ToolPointModel:
         from .modal_fit import fit_tool_point_model
 
         return fit_tool_point_model(frf, **fit_options).model
+
+    @property
+    def state_space(self) -> "ToolPointModel":
+        return self
 
     # -- frequency response -------------------------------------------------------------------
     @cached_property
@@ -241,47 +246,3 @@ def _off_poles(d: np.ndarray, lam: np.ndarray) -> np.ndarray:
     return d
 
 
-Tool = Union[ToolPointModel, ToolPointFrf]
-ToolSource = Union[Tool, Sequence[Tool], Callable[[float], Tool]]
-
-
-def tool_at_speeds(tool: ToolSource, speeds_rpm: np.ndarray) -> tuple[list[Tool], bool]:
-    """Tool at every speed, and whether it depends on the speed.
-
-    ``tool`` is one model or FRF (the same at every speed), a sequence with one entry per
-    speed, or a callable ``tool(speed_rpm)`` (the rotor model recomputed at each speed).
-    """
-    speeds = np.asarray(speeds_rpm, float)
-    if isinstance(tool, (ToolPointModel, ToolPointFrf)):
-        return [tool] * len(speeds), False
-    if callable(tool):
-        return [tool(float(s)) for s in speeds], True
-    seq = list(tool)
-    if len(seq) != len(speeds):
-        raise ValueError(f"{len(seq)} tool models for {len(speeds)} speeds")
-    return seq, True
-
-
-def as_state_space(tool: Tool, **fit_options) -> ToolPointModel:
-    """The tool as a state-space model; a sampled FRF is modal-fitted first."""
-    if isinstance(tool, ToolPointModel):
-        return tool
-    from .modal_fit import fit_tool_point_model  # measured FRFs only
-
-    log.info("fitting a modal model to the sampled FRF (%s)", tool.source or "unnamed")
-    return fit_tool_point_model(tool, **fit_options).model
-
-
-def for_simulation(tool):
-    """A rotor model for the time-domain simulation: its modes up to three times the highest mode with a
-    tenth of the largest peak compliance (the stiff, lightly damped modes far above would only shrink the
-    time step); a list of models model by model; anything else as it is."""
-    def cut(m):
-        if not isinstance(m, ToolPointModel) or m.A.shape[0] <= 16:
-            return m
-        top = max(s.frequency_hz for s in m.significant_modes(rel=0.1))
-        return m.truncated(3.0 * top)
-
-    if isinstance(tool, list):
-        return [cut(m) for m in tool]
-    return cut(tool)

@@ -32,7 +32,7 @@ import numpy as np
 from .process import TurningProcess
 from .regenerative import frequency_domain_diagram, parametric_lobes, sample_tool
 from .results import LobeCurve, LobeDiagram
-from .state_space import Tool, ToolSource
+from .tool import ToolPoint, ToolSource
 
 __all__ = ["oriented_frf", "turning_lobes", "turning_parametric_lobes"]
 
@@ -56,7 +56,7 @@ def turning_lobes(process: TurningProcess, tool: ToolSource, speeds_rpm: np.ndar
                                     max_lobes, frequency_hz)
 
 
-def turning_parametric_lobes(process: TurningProcess, tool: Tool, lobes=range(6),
+def turning_parametric_lobes(process: TurningProcess, tool: ToolPoint, lobes=range(6),
                              frequency_hz: np.ndarray | None = None) -> list[LobeCurve]:
     """The classical parametric lobes (speed, b_lim, f_c) swept over the chatter frequency."""
     omega, H = sample_tool(tool, frequency_hz)

@@ -25,7 +25,7 @@ import numpy as np
 from .process import MillingProcess, TurningProcess
 from .regenerative import eigen_branches, frequency_domain_diagram
 from .results import LobeDiagram
-from .state_space import ToolSource
+from .tool import ToolSource
 
 __all__ = ["zero_order_lobes"]
 

@@ -22,9 +22,7 @@ NO_BOUNDARY = "NaN where there is no stability boundary at that speed"
 
 
 def _frf(tool) -> tuple[np.ndarray, np.ndarray]:
-    from ..chatter.state_space import ToolPointModel
-
-    frf = tool.frf() if isinstance(tool, ToolPointModel) else tool
+    frf = tool.frf()
     return frf.frequency_hz, frf.H
 
 
@@ -35,12 +33,12 @@ def _limits(g: str, speed_rpm, limit_depth_m, chatter_frequency_hz) -> dict[str,
             f"{g}/chatter_frequency_hz": Data(chatter_frequency_hz, "Hz", s, NO_BOUNDARY, fill_nan=True)}
 
 
-def _frf_per_speed(tool, speed_rpm: np.ndarray) -> dict[str, Any]:
-    """The dominant modes of the FRF at every speed (NaN pads speeds with fewer modes)."""
-    from ..chatter.state_space import ToolPointModel
-
-    modes = [[(m.frequency_hz, m.damping_ratio, m.peak_compliance_m_N) for m in t.significant_modes(rel=0.1)]
-             for t in tool if isinstance(t, ToolPointModel)]
+def _frf_per_speed(series, speed_rpm: np.ndarray) -> dict[str, Any]:
+    """The dominant modes of the tool series' state-space models at every speed (NaN pads speeds with fewer
+    modes)."""
+    models = [t.state_space for t in series.tools]
+    modes = [[(m.frequency_hz, m.damping_ratio, m.peak_compliance_m_N) for m in ss.significant_modes(rel=0.1)]
+             for ss in models if ss is not None]
     if not modes:
         return {}
     width = max(len(m) for m in modes)
@@ -114,7 +112,9 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
 MAP_NOT_ASKED = "not computed (ask with spindlesim chatter --map, or semi_discretization: {stability_map: true})"
 
 
-def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_tool, info: dict[str, Any]) -> Path:
+def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, shown, info: dict[str, Any]) -> Path:
+    """chatter.h5 of ``result`` (its tool series: the modes per speed when it changes with the speed); ``shown``
+    the tool point whose FRF the file holds (:attr:`~spindlesim.analysis.chatter_study.ChatterStudy.shown_tool`)."""
     dg = result.diagram
     data: dict[str, Any] = _limits("/chatter", dg.speed_rpm, dg.limit_depth_m, dg.chatter_frequency_hz)
     data["/chatter/boundary_kind"] = Data(np.asarray(dg.boundary_kind, dtype=object), "1", ("speed_rpm",),
@@ -124,10 +124,9 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
     data.update(pocket_data)
     for c in dg.lobes:
         data.update(_limits(f"/chatter/lobes/{c.kind}_{c.lobe}", c.speed_rpm, c.limit_depth_m, c.chatter_frequency_hz))
-    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
     data.update(tool_point_frf("/chatter/frf", *_frf(shown)))
-    if isinstance(tool, list):
-        data.update(_frf_per_speed(tool, dg.speed_rpm))
+    if result.tool.speed_dependent:
+        data.update(_frf_per_speed(result.tool, dg.speed_rpm))
     if at_deck is not None:
         data.update(_limits("/chatter/at_deck_speed", at_deck.speed_rpm, at_deck.limit_depth_m,
                             at_deck.chatter_frequency_hz))

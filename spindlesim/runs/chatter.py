@@ -37,21 +37,19 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     st = chatter_study(spec, points, float(d.operating.speed_rpm) if d.operating is not None else 0.0,
                        bool(opts.get("exact")), tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ()),
                        None if limit is None else limit[0], progress, bool(opts.get("map")))
-    return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.result.tool, st.deck_tool, st.info)
+    return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)
 
 
-def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> list[Path]:
+def _write(outdir, run_info, spec, result, at_deck, shown, info) -> list[Path]:
     from ..chatter.plots import frf_figure, simulation_figure, stability_map_figure
     from ..output.chatter_writer import write_chatter
     from ..output.drawing import draw
 
-    paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, tool, deck_tool, info)]
+    paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, shown, info)]
     dg = result.diagram
     paths.append(draw(outdir / "chatter_lobes.png", lobes_figure, dg, result.simulations, at_deck,
                       info.get("deck_speed_rpm"), result.recommendation, result.speed_limit_rpm))
-    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
-    if shown is not None:
-        paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
+    paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
     if dg.stability_map is not None:
         paths.append(draw(outdir / "chatter_stability_map.png", stability_map_figure, dg))
     for k, sim in enumerate(result.simulations):

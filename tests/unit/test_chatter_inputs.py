@@ -5,7 +5,7 @@ import pytest
 
 from spindlesim.chatter import MillingProcess, Mode, ToolPointFrf, ToolPointModel, TurningProcess
 from spindlesim.chatter.process import _antiderivative
-from spindlesim.chatter.state_space import as_state_space, tool_at_speeds
+from spindlesim.chatter.tool import ToolSeries, as_state_space, for_simulation, tool_series
 
 MODES = [Mode("x", 650.0, 0.035, 2.2e7), Mode("x", 1450.0, 0.02, 4.0e7), Mode("y", 720.0, 0.03, 2.6e7)]
 
@@ -70,16 +70,48 @@ def test_frf_validation_and_interpolation():
         Mode("x", 100.0, 1.5, 1e6)
 
 
-def test_tool_at_speeds_forms():
+def test_tool_series_forms():
+    """One tool at every speed, one per speed (looked up by the speed, not by position or the nearest), and a
+    callable computed at each speed and at speeds added later."""
     model = ToolPointModel.from_modes(MODES)
+    other = ToolPointModel.from_modes([Mode("x", 500.0, 0.02, 1e6)])
     speeds = np.array([1000.0, 2000.0])
-    tools, per = tool_at_speeds(model, speeds)
-    assert not per and tools == [model, model]
-    tools, per = tool_at_speeds(lambda n: model, speeds)
-    assert per and len(tools) == 2
+    const = tool_series(model, speeds)
+    assert not const.speed_dependent and const.along(speeds) == [model, model] and const.tool_at(1234.0) is model
+    assert const.at([5.0]) is const and const.extendable
+    asked = []
+    computed = tool_series(lambda n: asked.append(n) or model, speeds)
+    assert computed.speed_dependent and asked == [1000.0, 2000.0] and computed.tool_at(1500.0) is model
+    assert asked[-1] == 1500.0 and computed.tool_at(2000.0) is model and asked[-1] == 1500.0
     with pytest.raises(ValueError, match="2 speeds"):
-        tool_at_speeds([model], speeds)
-    assert as_state_space(model) is model
+        tool_series([model], speeds)
+    listed = tool_series([model, other], speeds)
+    assert listed.along([2000.0, 1000.0]) == [other, model] and not listed.extendable
+    with pytest.raises(ValueError, match="no tool at 1900 rpm"):
+        listed.tool_at(1900.0)
+    assert listed.near(1900.0) is other and listed.near(1000.0) is model  # a check off the grid: the nearest
+    joined = listed.joined(ToolSeries(np.array([1500.0]), (model,)))
+    assert joined.at([1000.0, 1500.0, 2000.0]).tools == (model, model, other)
+    assert tool_series(listed, [7.0]) is listed
+    assert as_state_space(model) is model and model.state_space is model
+
+
+def test_both_tool_points_implement_the_protocol():
+    """The model and the sampled FRF answer the same questions: receptance at frequencies, the FRF on their own
+    grid or given frequencies, the state space where there is one (a sampled FRF is fitted for it)."""
+    model = ToolPointModel.from_modes(MODES)
+    f = np.arange(100.0, 3000.0, 0.5)
+    frf = model.frf(f)
+    w = 2 * np.pi * np.array([700.0, 922.25, 1500.0])
+    assert np.allclose(frf.receptance(w), model.receptance(w), rtol=2e-3)
+    assert frf.frf() is frf and np.allclose(frf.frf(f[10:20]).H, frf.H[10:20])
+    assert np.array_equal(model.frf().frequency_hz, model.frequency_grid())
+    assert frf.state_space is None
+    fitted = as_state_space(frf)
+    assert fitted.state_space is fitted
+    assert for_simulation(frf) is frf and for_simulation(model) is model
+    with pytest.raises(ValueError, match="band"):
+        frf.receptance(np.array([2 * np.pi * 5000.0]))
 
 
 def test_milling_average_directional_factors_are_altintas_budak():

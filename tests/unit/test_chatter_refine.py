@@ -102,13 +102,13 @@ def test_merged_fills_lobes_one_side_lacks_and_takes_the_smaller_cap():
 
 
 def test_run_chatter_refines_with_a_model_per_speed():
-    """The driver with one tool-point model per speed (as from the rotor) and ``tools_at`` for the added
+    """The driver with one tool-point model per speed (as from the rotor) and ``more`` for the added
     speeds.  Full slot, 4 teeth (zero order, exact there), two-mode tool: on a 700 rpm grid the deepest
     pocket sits at one grid speed (14,100 rpm, 0.702 mm interpolated); on a 10 rpm grid it peaks at
     0.733 mm at 14,170 rpm and keeps 0.639 mm over 13,955-14,238 rpm.  After refinement the driver
     recommends it on computed limits, every diagram speed has its tool, and the added speeds were asked
-    for through ``tools_at``."""
-    from spindlesim.chatter import MillingProcess, Mode, ToolPointModel, run_chatter, stability_lobes
+    for through ``more``."""
+    from spindlesim.chatter import MillingProcess, Mode, ToolPointModel, ToolSeries, run_chatter, stability_lobes
     from spindlesim.chatter.section import ChatterSpec
 
     tool = ToolPointModel.from_modes([Mode("x", 922.0, 0.011, 1.34e6), Mode("y", 1010.0, 0.02, 2.0e6)])
@@ -121,12 +121,13 @@ def test_run_chatter_refines_with_a_model_per_speed():
         return [tool] * len(speeds)
 
     spec = ChatterSpec(slot, grid, "auto", "rotor", None, True)
-    result = run_chatter(spec, [tool] * len(grid), tools_at=tools_at)
+    result = run_chatter(spec, ToolSeries(grid, (tool,) * len(grid), tools_at))
     assert asked and len(result.diagram.speed_rpm) == len(grid) + sum(len(a) for a in asked)
-    assert len(result.tool) == len(result.diagram.speed_rpm)
+    assert np.array_equal(result.tool.speeds_rpm, result.diagram.speed_rpm)
+    assert len(result.tool.tools) == len(result.diagram.speed_rpm)
     fine = stability_lobes(slot, tool, np.arange(13900.0, 14300.0, 2.0))
     assert result.recommendation.peak_depth_m == pytest.approx(np.nanmax(fine.limit_depth_m), rel=0.02)
     assert abs(result.recommendation.peak_speed_rpm - 14170.0) < 30.0
     assert result.recommendation.grid_speeds >= MIN_GRID_SPEEDS
-    unrefined = run_chatter(spec, [tool] * len(grid))  # a list without tools_at: the grid as given
+    unrefined = run_chatter(spec, [tool] * len(grid))  # a list (a series without more): the grid as given
     assert len(unrefined.diagram.speed_rpm) == len(grid) and unrefined.recommendation.grid_speeds == 1
