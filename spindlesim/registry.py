@@ -49,6 +49,15 @@ class Analysis:
     derived_units: tuple[tuple[str, str], ...] = ()
     #: the curve a sweep draws side by side for its cases
     overlay: Overlay | None = None
+    #: the stem of the file it writes, when not its name (``<file>.h5``; its results in the group ``/<name>``).
+    #: Analyses that write one file are alternatives: the command or deck name of that file runs the first of
+    #: them the deck has the leading section for, and ``spindlesim run`` runs only the first it has the sections for
+    file: str = ""
+
+    @property
+    def stem(self) -> str:
+        """The stem of the file it writes."""
+        return self.file or self.name
 
 
 @dataclass(frozen=True)
@@ -69,17 +78,21 @@ class Command:
 
 _ROTOR = "a rotor (shaft or journal) and operating"
 _ROTOR_ON = (("rotor", "operating"),)
-_FILM = ("fluid-film bearings (type three_lobe or plain) and operating; thermal alone: a spindle_thermal section "
-         "and operating")
+_FILM = "fluid-film bearings (type three_lobe or plain) and operating"
 _FILM_ON = (("fluid_film", "operating"),)
 _SPECTRUM: Overlay = ("transient.h5", "transient/spectrum/frequency_hz", "transient/spectrum/amplitude_m",
                       "frequency [Hz]", "spectrum amplitude [m]")
 
 #: every analysis, in the order ``spindlesim run`` runs them
 ANALYSIS_REGISTRY: tuple[Analysis, ...] = (
-    Analysis("thermal", "thermal:run", needs=_FILM, runs_on=_FILM_ON + (("spindle_thermal", "operating"),),
+    Analysis("spindle_thermal", "spindle_thermal:run", file="thermal",
+             needs="a spindle_thermal section (a shaft on rolling bearings) and operating",
+             runs_on=(("spindle_thermal", "operating"),), summary="thermal_summary:spindle_thermal",
+             key_scalars=("spindle_thermal@runaway_speed_rpm", "spindle_thermal/tool_tip_axial_drift_m*")),
+    Analysis("thermal", "fluidfilm:run_thermal", needs=_FILM, runs_on=_FILM_ON,
              summary="bearing_summary:thermal",
-             help="Thermal equilibrium of fluid-film bearings (heat balance of film, oil flow and housing).",
+             help="Thermal equilibrium of fluid-film bearings (film, oil flow, housing) or of a spindle_thermal "
+                  "section.",
              key_scalars=("thermal/*/temperature_mean_C", "thermal/*/eccentricity_ratio")),
     Analysis("coefficients", "fluidfilm:run_coefficients", needs=_FILM, runs_on=_FILM_ON,
              summary="bearing_summary:coefficients",
@@ -172,10 +185,19 @@ def file_commands() -> tuple[str, ...]:
 
 
 def file_summaries() -> dict[str, str]:
-    """file stem -> ``module:function`` summarising ``<stem>.h5``: every analysis's, and the commands' that
-    write a file of their own."""
+    """analysis (or command file stem) -> ``module:function`` summarising its file: every analysis's, and the
+    commands' that write a file of their own."""
     return {**{a.name: a.summary for a in ANALYSIS_REGISTRY if a.summary},
             **{c.file or c.name: c.summary for c in TOOL_COMMANDS if c.summary}}
+
+
+def file_writers() -> dict[str, tuple[str, ...]]:
+    """file stem -> the analyses that write ``<stem>.h5``, in the registry's order (several: alternatives, each
+    writing its group ``/<name>``)."""
+    out: dict[str, tuple[str, ...]] = {}
+    for a in ANALYSIS_REGISTRY:
+        out[a.stem] = out.get(a.stem, ()) + (a.name,)
+    return out
 
 
 def analysis(name: str) -> Analysis:

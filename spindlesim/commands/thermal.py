@@ -1,4 +1,5 @@
-"""``spindlesim thermal [DECK]``: thermal equilibrium of the fluid-film bearings."""
+"""``spindlesim thermal [DECK]``: thermal equilibrium of the fluid-film bearings, or of the spindle's thermal model
+(the ``spindle_thermal`` analysis) on a deck with a ``spindle_thermal:`` section (runs.analysis_for)."""
 
 import click
 
@@ -13,5 +14,7 @@ from .common import deck_argument, outdir_option, run_and_report, report_options
               help="Spin speed [rpm], >= 0 (default: deck).")
 def command(deck, outdir, speed_rpm):
     """Thermal equilibrium of every three_lobe/plain bearing (heat generated in the film = heat carried by the
-    oil + heat through the housing; the effective viscosity at the mean film temperature): thermal.h5."""
+    oil + heat through the housing; the effective viscosity at the mean film temperature), or, on a deck with a
+    spindle_thermal section, of the spindle's thermal model at its speeds (heat, temperatures, preload, tool-tip
+    drift, the thermal speed limit; the warm-up): thermal.h5."""
     run_and_report("thermal", deck, outdir, {"speed_rpm": speed_rpm})

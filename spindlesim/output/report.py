@@ -230,9 +230,9 @@ def file_provenance(paths: Iterable[Path]) -> dict[str, Any]:
 
 def _summaries(path: Path) -> tuple[list[str] | None, str]:
     """The summary lines of one HDF5 file (None when it has no summary) or why there are none."""
-    from .summary import SUMMARIES, summarize
+    from .summary import has_summary, summarize
 
-    if path.stem not in SUMMARIES:
+    if not has_summary(path):
         return None, ""
     try:
         found = summarize([path])

@@ -5,8 +5,10 @@ terminal (or a script reads with ``--json``) is what the file holds; it never re
 recomputes a verdict (critical speeds, API 684 margins, the stability threshold are the analysis's).
 Each analysis names the function that summarises its file in the registry (spindlesim/registry.py);
 each returns ``(lines, data)``: a few text lines and the same numbers as a JSON-able dict.  The
-rotor's summaries are in rotor_summary.py, the bearings' in bearing_summary.py, the transient's and
-chatter's here.
+rotor's summaries are in rotor_summary.py, the bearings' in bearing_summary.py, a spindle's thermal model's in
+thermal_summary.py, the transient's and chatter's here.  A file that several analyses write (thermal.h5: the
+fluid-film bearings' or the spindle_thermal section's) is summarised as the analysis whose group it holds
+(each writes ``/<its name>``).
 """
 
 from __future__ import annotations
@@ -17,21 +19,34 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..registry import file_summaries
+from ..registry import file_summaries, file_writers
 from .labels import frequency_label, readable_keys
 from .numbers import with_resolution
 
-#: file stem (an analysis's name) -> "module:function" in spindlesim.output: the summary of that file
+#: analysis (or a command's file stem) -> "module:function" in spindlesim.output: the summary of its file
 SUMMARIES: dict[str, str] = file_summaries()
+#: file stem -> the analyses that write that file (several: each writes its own group, /<name>)
+WRITERS: dict[str, tuple[str, ...]] = file_writers()
 
 
-def summary_of(stem: str) -> Callable | None:
-    """The summary function of the files named ``<stem>.h5``, or None."""
-    where = SUMMARIES.get(stem)
+def summary_of(name: str) -> Callable | None:
+    """The summary function of the analysis ``name`` (or of a command's files ``<name>.h5``), or None."""
+    where = SUMMARIES.get(name)
     if where is None:
         return None
     module, function = where.split(":")
     return getattr(importlib.import_module(f"{__package__}.{module}"), function)
+
+
+def has_summary(path: Path) -> bool:
+    """Whether the file ``path`` is one a summary reads (by its name)."""
+    return Path(path).suffix == ".h5" and any(n in SUMMARIES for n in WRITERS.get(Path(path).stem, (Path(path).stem,)))
+
+
+def _writer(f, stem: str) -> str:
+    """The analysis that wrote the open file ``f`` named ``<stem>.h5``: the one of its writers whose group it holds."""
+    names = WRITERS.get(stem, (stem,))
+    return next((n for n in names if n in f), names[0]) if len(names) > 1 else names[0]
 
 
 def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
@@ -40,10 +55,12 @@ def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
 
     out = []
     for p in paths:
-        if Path(p).suffix != ".h5" or Path(p).stem not in SUMMARIES:
+        if not has_summary(p):
             continue
-        fn = summary_of(Path(p).stem)
         with h5py.File(p, "r") as f:
+            fn = summary_of(_writer(f, Path(p).stem))
+            if fn is None:
+                continue
             lines, data = fn(f)
             if not f.attrs.get("complete", True):
                 reason = f.attrs.get("incomplete_reason", "")

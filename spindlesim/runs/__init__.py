@@ -24,7 +24,7 @@ from ..deck.loader import ANALYSES, LoadedDeck
 from ..output import drawing
 from ..output.hdf5 import RunInfo
 from .common import RunContext
-from ..registry import analysis, default_rows
+from ..registry import analysis, default_rows, file_writers
 
 log = logging.getLogger(__name__)
 
@@ -57,7 +57,7 @@ def run_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str | Pat
     loaded = context_of(loaded)
     if name not in RUNS:
         raise KeyError(f"unknown analysis {name!r}; known: {', '.join(RUNS)}")
-    module, function = RUNS[name]
+    module, function = RUNS[analysis_for(name, loaded.deck)]
     fn = getattr(importlib.import_module(f"{__name__}.{module}"), function)
     status = importlib.import_module(f"{__name__}.status")
     status.remove_stale_temporaries(outdir)  # a killed run's *.tmp
@@ -79,19 +79,40 @@ def run_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str | Pat
 DEFAULT_RUN: tuple[tuple[tuple[str, ...], str], ...] = default_rows()
 
 
+def _has(deck, section: str) -> bool:
+    """Whether ``deck`` has ``section`` of a registry entry's ``runs_on`` ("rotor": shaft or journal; "fluid_film":
+    a bearing of type three_lobe or plain; else the deck section of that name)."""
+    if section == "rotor":
+        return deck.shaft is not None or deck.journal is not None
+    if section == "fluid_film":
+        return bool(bearing_entries(deck, *FLUID_FILM_TYPES))
+    return getattr(deck, section, None) is not None
+
+
+def analysis_for(name: str, deck) -> str:
+    """The analysis that runs for ``name``: itself; for the name of a file that several analyses write (the
+    ``thermal`` command's thermal.h5: the fluid-film bearings' or the spindle_thermal section's), the first of them
+    whose leading section (the first of a ``runs_on`` alternative) the deck has, else ``name`` itself."""
+    writers = file_writers().get(analysis(name).name, ())
+    if len(writers) > 1:
+        for other in writers:
+            if any(_has(deck, sections[0]) for sections in analysis(other).runs_on):
+                return other
+    return name
+
+
 def default_analyses(loaded: LoadedDeck) -> list[str]:
     """What ``spindlesim run`` does when the deck has no ``analyses`` list: every analysis the deck has the
-    sections for (:data:`DEFAULT_RUN`; each analysis's ``runs_on`` in the registry)."""
+    sections for (:data:`DEFAULT_RUN`; each analysis's ``runs_on`` in the registry), of analyses that write one
+    file the first only."""
     d = loaded.deck
     if (d.shaft is not None or d.journal is not None) and d.operating is None:
         log.warning("the deck has a rotor but no 'operating' section: the rotor analyses are not run")
-
-    def present(section: str) -> bool:
-        if section == "rotor":
-            return d.shaft is not None or d.journal is not None
-        if section == "fluid_film":
-            return bool(bearing_entries(d, *FLUID_FILM_TYPES))
-        return getattr(d, section) is not None
-
-    return [name for names, _ in DEFAULT_RUN for name in names
-            if any(all(present(s) for s in sections) for sections in analysis(name).runs_on)]
+    chosen: list[str] = []
+    for names, _ in DEFAULT_RUN:
+        for name in names:
+            a = analysis(name)
+            if any(all(_has(d, s) for s in sections) for sections in a.runs_on) and \
+                    all(analysis(c).stem != a.stem for c in chosen):
+                chosen.append(name)
+    return chosen

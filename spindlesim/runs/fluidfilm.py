@@ -1,4 +1,4 @@
-"""The ``thermal`` and ``coefficients`` analyses: deck -> fluid-film bearings -> HDF5 + PNG.
+"""The ``thermal`` (of the fluid-film bearings) and ``coefficients`` analyses: deck -> fluid-film bearings -> HDF5 + PNG.
 
 Signatures follow ``spindlesim.runs`` (the RUNS table):
 ``(loaded_deck, outdir, run_info, options, progress) -> list[Path]``; ``options`` may set

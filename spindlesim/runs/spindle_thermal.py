@@ -1,4 +1,6 @@
-"""``spindlesim thermal`` on a spindle with a ``spindle_thermal:`` section (ball bearings, motor, housing).
+"""The ``spindle_thermal`` analysis (a spindle's thermal model: rolling bearings, motor, housing), registered on its
+own and run by ``spindlesim thermal`` on a deck with a ``spindle_thermal:`` section (its file is the command's,
+thermal.h5; spindlesim/registry.py).
 
 At each speed of ``spindle_thermal.speeds_rpm`` (default: the operating speed), from the lowest up, the
 spindle's thermal equilibrium (``analysis.spindle_thermal``): heat per source, every network node's

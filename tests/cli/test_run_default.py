@@ -41,7 +41,34 @@ def test_a_deck_with_every_section_runs_every_analysis_in_the_help_order():
             + "".join(_embedded(n, title=False) for n in ("bearing", "dtrb", "contact", "transient")))
     loaded = parse_deck(text)
     help_names = [n for row, _ in _help_rows() for n in row.split(", ")]
-    assert default_analyses(loaded) == help_names == [n for names, _ in DEFAULT_RUN for n in names]
+    assert help_names == [n for names, _ in DEFAULT_RUN for n in names]
+    # the one exception: spindle_thermal writes thermal.h5 too, and a spindle_thermal section needs rolling bearings
+    # (the milling deck below): with fluid-film bearings thermal.h5 is theirs
+    assert default_analyses(loaded) == [n for n in help_names if n != "spindle_thermal"]
+    milling = [n for n in default_analyses(load_deck(DECKS / "milling_spindle.yaml"))]
+    assert milling == [n for n in help_names if n in milling] and milling[0] == "spindle_thermal"
+    assert "thermal" not in milling
+
+
+def test_analyses_of_one_file_are_alternatives_the_deck_picks():
+    """The thermal command (and a deck listing `thermal`) runs the spindle's thermal model on a deck with a
+    spindle_thermal section, the fluid-film bearings' equilibrium on the others; `spindlesim run` runs only the
+    first of them a deck with both has the sections for."""
+    from spindlesim.runs import analysis_for
+
+    milling = load_deck(DECKS / "milling_spindle.yaml")
+    three_lobe = load_deck(DECKS / "seed003_three_lobe.yaml")
+    assert analysis_for("thermal", milling.deck) == "spindle_thermal"
+    assert analysis_for("thermal", three_lobe.deck) == "thermal"
+    assert analysis_for("spindle_thermal", three_lobe.deck) == "spindle_thermal"  # asked for by name: itself
+    assert analysis_for("coefficients", milling.deck) == "coefficients"
+    text = milling.text.replace("  - name: rear\n", "  - {name: film, node: 2, type: plain, diameter_mm: 50.0, "
+                                "width_mm: 25.0, clearance_mm: 0.05, oil: {viscosity_Pa_s: 0.01}}\n  - name: rear\n", 1)
+    assert "name: film" in text
+    both = parse_deck(text)
+    assert analysis_for("thermal", both.deck) == "spindle_thermal"
+    names = default_analyses(both)
+    assert "spindle_thermal" in names and "thermal" not in names and "coefficients" in names
 
 
 def test_each_rule_of_the_default():
