@@ -122,3 +122,18 @@ def test_what_runs_by_default_is_stated_and_ruled_together():
     for a in registry.ANALYSIS_REGISTRY:
         assert bool(a.needs) == bool(a.runs_on), a.name
         assert {s for alt in a.runs_on for s in alt} <= sections, a.name
+
+
+def test_the_spindles_thermal_model_is_an_analysis_of_its_own():
+    """spindle_thermal has its own run, summary and key results, and writes the thermal command's file (issue 34,
+    item 3); the summary of thermal.h5 is the one of the analysis whose group the file holds."""
+    from spindlesim.output.summary import WRITERS, _writer
+
+    a = registry.analysis("spindle_thermal")
+    assert a.run == "spindle_thermal:run" and a.stem == "thermal" and a.key_scalars and a.runs_on
+    assert registry.analysis("thermal").run == "fluidfilm:run_thermal"
+    assert ("spindle_thermal", "operating") not in registry.analysis("thermal").runs_on
+    assert WRITERS["thermal"] == ("spindle_thermal", "thermal") and WRITERS["chatter"] == ("chatter",)
+    assert _writer({"spindle_thermal"}, "thermal") == "spindle_thermal" and _writer({"thermal"}, "thermal") == "thermal"
+    assert summary_of("spindle_thermal") is not summary_of("thermal")
+    assert not (ROOT / "runs" / "thermal.py").exists()  # no run that picks between the two
