@@ -178,3 +178,25 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, tool, deck_to
             a["chatter_frequency_hz"] = s.chatter_frequency_hz
         attrs[f"/chatter/simulation/{k + 1}"] = a
     return write_h5(path, run, data, attrs)
+
+
+def write_chatter_tool_point(path: Path, run: RunInfo, spec, tool, deck_tool, info: dict[str, Any]) -> Path:
+    """chatter.h5 of a run interrupted in the lobes: what was computed before them, the tool-point FRF (and the
+    dominant modes at every speed where it was solved per speed); ``run`` says why it is incomplete."""
+    shown = deck_tool if deck_tool is not None else (tool[0] if isinstance(tool, list) else tool)
+    data: dict[str, Any] = {}
+    if shown is not None:
+        data.update(tool_point_frf("/chatter/frf", *_frf(shown)))
+    if isinstance(tool, list):
+        data.update(_frf_per_speed(tool, np.asarray(spec.speeds_rpm, float)))
+    attrs: dict[str, dict[str, Any]] = {"/chatter": {
+        "process": spec.process.describe(), "lobes": "not computed (interrupted)",
+        "frf_source": info["frf_source"], "frf_at_each_speed": bool(info.get("frf_at_each_speed", False))}}
+    for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
+        if key in info:
+            attrs["/chatter"][{"node": "tool_point_node"}.get(key, key)] = info[key]
+    if shown is not None:
+        attrs["/chatter/frf"] = {"layout": "[frequency, output (x, y), input (x, y)]"}
+        if info.get("deck_speed_rpm") is not None:
+            attrs["/chatter/frf"]["speed_rpm"] = info["deck_speed_rpm"]
+    return write_h5(path, run, data, attrs)

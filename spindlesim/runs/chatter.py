@@ -37,7 +37,30 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     st = chatter_study(spec, points, float(d.operating.speed_rpm) if d.operating is not None else 0.0,
                        bool(opts.get("exact")), tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ()),
                        None if limit is None else limit[0], progress, bool(opts.get("map")))
-    return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.result.tool, st.deck_tool, st.info)
+    if not st.interrupted:
+        return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.tool, st.deck_tool, st.info)
+    import dataclasses  # Ctrl-C: what was computed is written, marked incomplete (exit 130)
+
+    from .status import IncompleteRun
+
+    run_info = dataclasses.replace(run_info, complete=False, incomplete_reason=st.interrupted)
+    if st.result is not None:
+        paths = _write(outdir, run_info, st.spec, st.result, st.at_deck, st.tool, st.deck_tool, st.info)
+    else:
+        paths = _write_tool_point(outdir, run_info, st)
+    raise IncompleteRun(f"chatter: {st.interrupted}", paths, interrupted=True)
+
+
+def _write_tool_point(outdir, run_info, st) -> list[Path]:
+    from ..chatter.plots import frf_figure
+    from ..output.chatter_writer import write_chatter_tool_point
+    from ..output.drawing import draw
+
+    paths = [write_chatter_tool_point(outdir / "chatter.h5", run_info, st.spec, st.tool, st.deck_tool, st.info)]
+    shown = st.deck_tool if st.deck_tool is not None else (st.tool[0] if isinstance(st.tool, list) else st.tool)
+    if shown is not None:
+        paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
+    return paths
 
 
 def _write(outdir, run_info, spec, result, at_deck, tool, deck_tool, info) -> list[Path]:
