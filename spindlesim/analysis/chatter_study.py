@@ -38,12 +38,17 @@ class ChatterStudy:
     at_deck: Any = None
     deck_tool: Any = None
     info: dict = field(default_factory=dict)
+    #: why the study is incomplete (the user pressed Ctrl-C: where, and what is kept); empty when complete.
+    #: Interrupted in the lobes themselves, ``result`` is None and ``tool`` holds the tool-point models solved
+    interrupted: str = ""
+    #: the tool series of the lobes (:class:`~spindlesim.chatter.tool.ToolSeries`; the result's when there is one)
+    tool: Any = None
 
     @property
     def shown_tool(self):
         """The tool point whose FRF the file holds and the figure draws: the deck speed's, else the first of the
         series the lobes used (the one tool of a tap test or a file)."""
-        return self.deck_tool if self.deck_tool is not None else self.result.tool.first
+        return self.deck_tool if self.deck_tool is not None else self.tool.first
 
     # ---- named results --------------------------------------------------------------------------------
     @property
@@ -103,10 +108,22 @@ def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck
     if stability_map:
         opts["stability_map"] = True
     spec = dataclasses.replace(spec, simulation_points=sims, method_options=MappingProxyType(opts))
-    result = run_chatter(spec, tool, simulation_tool=tool.mapped(for_simulation) if sims else None,
-                         speed_limit_rpm=speed_limit_rpm)
+    try:
+        result = run_chatter(spec, tool, simulation_tool=tool.mapped(for_simulation) if sims else None,
+                             speed_limit_rpm=speed_limit_rpm)
+    except KeyboardInterrupt:  # in the lobes: the tool-point FRF is what was computed
+        why = (f"interrupted by the user in the lobes ({spec.process.method_for(spec.method).replace('_', ' ')}): "
+               "the tool-point FRF is written, no lobes")
+        log.warning("chatter: %s", why)
+        return ChatterStudy(None, spec, None, deck_tool, info, why, tool)
     at_deck = None
-    if deck_tool is not None and info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed
-        at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
-                                  **(opts | {"stability_map": False}))
-    return ChatterStudy(result, spec, at_deck, deck_tool, info)
+    if deck_tool is not None and info["frf_at_each_speed"] and not result.interrupted:
+        try:  # the comparison: every COMPARE_EVERY-th speed
+            at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
+                                      **(opts | {"stability_map": False}))
+        except KeyboardInterrupt:
+            why = ("interrupted by the user in the lobes of the deck speed's FRF (the comparison): the lobes are "
+                   "written, the comparison not")
+            log.warning("chatter: %s", why)
+            return ChatterStudy(result, spec, None, deck_tool, info, why, result.tool)
+    return ChatterStudy(result, spec, at_deck, deck_tool, info, result.interrupted, result.tool)

@@ -65,6 +65,9 @@ class ChatterResult:
     tool: ToolSeries | None = None
     #: the spindle's thermal speed limit [rpm]: speeds above it are never recommended nor the minimum's
     speed_limit_rpm: float | None = None
+    #: why the result is incomplete: the user pressed Ctrl-C after the lobes were solved (the part not done); empty
+    #: when complete
+    interrupted: str = ""
 
     @property
     def recommendation(self) -> Pocket | None:
@@ -120,7 +123,25 @@ def run_chatter(spec: ChatterSpec, tool: ToolSource | None = None,
             used = used.joined(added)
             return stability_lobes(spec.process, added, extra, spec.method, **same_cap)
 
-        diagram = refine_pockets(diagram, solve)
-    sims = tuple(simulate(spec.process, timed.near(s), s, a, **dict(spec.simulation_options))
-                 for s, a in spec.simulation_points)
-    return ChatterResult(diagram, sims, stability_pockets(diagram), used.at(diagram.speed_rpm), speed_limit_rpm)
+        try:  # a Ctrl-C from here on keeps the lobes solved on the grid
+            diagram = refine_pockets(diagram, solve)
+        except KeyboardInterrupt:
+            return _interrupted(diagram, (), series, speed_limit_rpm, "in the refinement of the stability pockets: "
+                                "the lobes on the speed grid are written, the pockets between grid speeds not "
+                                "refined and no time-domain check run")
+    used = used.at(diagram.speed_rpm)
+    sims: list[SimulationResult] = []
+    for s, a in spec.simulation_points:
+        try:
+            sims.append(simulate(spec.process, timed.near(s), s, a, **dict(spec.simulation_options)))
+        except KeyboardInterrupt:
+            return _interrupted(diagram, tuple(sims), used, speed_limit_rpm, (
+                f"in the time-domain check at {s:g} rpm, {1e3 * a:g} mm: the lobes are written with "
+                f"{len(sims)} of {len(spec.simulation_points)} checks"))
+    return ChatterResult(diagram, tuple(sims), stability_pockets(diagram), used, speed_limit_rpm)
+
+
+def _interrupted(diagram, sims, tool, speed_limit_rpm, where: str) -> ChatterResult:
+    log.warning("chatter: interrupted by the user %s", where)
+    return ChatterResult(diagram, sims, stability_pockets(diagram), tool, speed_limit_rpm,
+                         f"interrupted by the user {where}")

@@ -177,3 +177,22 @@ def write_chatter(path: Path, run: RunInfo, spec, result, at_deck, shown, info: 
             a["chatter_frequency_hz"] = s.chatter_frequency_hz
         attrs[f"/chatter/simulation/{k + 1}"] = a
     return write_h5(path, run, data, attrs)
+
+
+def write_chatter_tool_point(path: Path, run: RunInfo, spec, series, shown, info: dict[str, Any]) -> Path:
+    """chatter.h5 of a run interrupted in the lobes: what was computed before them, the FRF of the tool point
+    ``shown`` (and the dominant modes at every speed where the tool series changes with the speed); ``run`` says
+    why it is incomplete."""
+    data: dict[str, Any] = dict(tool_point_frf("/chatter/frf", *_frf(shown)))
+    if series.speed_dependent:
+        data.update(_frf_per_speed(series, np.asarray(spec.speeds_rpm, float)))
+    attrs: dict[str, dict[str, Any]] = {"/chatter": {
+        "process": spec.process.describe(), "lobes": "not computed (interrupted)",
+        "frf_source": info["frf_source"], "frf_at_each_speed": bool(info.get("frf_at_each_speed", False))}}
+    for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
+        if key in info:
+            attrs["/chatter"][{"node": "tool_point_node"}.get(key, key)] = info[key]
+    attrs["/chatter/frf"] = {"layout": "[frequency, output (x, y), input (x, y)]"}
+    if info.get("deck_speed_rpm") is not None:
+        attrs["/chatter/frf"]["speed_rpm"] = info["deck_speed_rpm"]
+    return write_h5(path, run, data, attrs)

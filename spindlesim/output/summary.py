@@ -159,6 +159,10 @@ def chatter(f):
     a = g.attrs
     lines = [f"{a['process']}; FRF from {a['frf_source']}" + (" recomputed at every speed" if a.get("frf_at_each_speed")
                                                               else "")]
+    if "lobes" in a:  # interrupted before the lobes: the tool-point FRF only
+        lines.append(f"  lobes: {a['lobes']}; the tool-point FRF is written" + (
+            f" (node {int(a['tool_point_node'])})" if "tool_point_node" in a else ""))
+        return lines, {}
     lines.append(f"  method: {a.get('method_selection') or str(a['method']).replace('_', ' ')}")
     data: dict[str, Any] = {"method": str(a["method"])}
     if "method" in g:

@@ -85,6 +85,8 @@ def _thermal(g, operating: tuple[float, float] | None, analysis: str) -> list[Ve
 def _chatter(g, operating: tuple[float, float] | None, analysis: str) -> list[Verdict]:
     a = g.attrs
     out = []
+    if "limit_depth_m" not in g:  # interrupted before the lobes
+        return out
     n, L = g["speed_rpm"][:], g["limit_depth_m"][:]
     if operating is not None and n[0] <= operating[0] <= n[-1] and np.isfinite(L).any():
         ok = np.isfinite(L)

@@ -37,7 +37,28 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     st = chatter_study(spec, points, float(d.operating.speed_rpm) if d.operating is not None else 0.0,
                        bool(opts.get("exact")), tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ()),
                        None if limit is None else limit[0], progress, bool(opts.get("map")))
-    return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)
+    if not st.interrupted:
+        return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)
+    import dataclasses  # Ctrl-C: what was computed is written, marked incomplete (exit 130)
+
+    from .status import IncompleteRun
+
+    run_info = dataclasses.replace(run_info, complete=False, incomplete_reason=st.interrupted)
+    if st.result is not None:
+        paths = _write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)
+    else:
+        paths = _write_tool_point(outdir, run_info, st)
+    raise IncompleteRun(f"chatter: {st.interrupted}", paths, interrupted=True)
+
+
+def _write_tool_point(outdir, run_info, st) -> list[Path]:
+    from ..chatter.plots import frf_figure
+    from ..output.chatter_writer import write_chatter_tool_point
+    from ..output.drawing import draw
+
+    paths = [write_chatter_tool_point(outdir / "chatter.h5", run_info, st.spec, st.tool, st.shown_tool, st.info)]
+    paths.append(draw(outdir / "chatter_frf.png", frf_figure, st.shown_tool, terms=("xx", "yy", "xy")))
+    return paths
 
 
 def _write(outdir, run_info, spec, result, at_deck, shown, info) -> list[Path]:
