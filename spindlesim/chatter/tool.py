@@ -92,7 +92,7 @@ class ToolSeries:
 
     @property
     def first(self) -> ToolPoint:
-        """The tool at the lowest listed speed (the constant tool)."""
+        """The tool at the series' first speed (the constant tool)."""
         return self.tools[0]
 
     @property
