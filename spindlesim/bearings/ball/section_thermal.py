@@ -13,6 +13,7 @@ from typing import Annotated, Optional
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, NonNegFloat, PositiveFloat
+from ..plausible import Found, fits_and_expansions
 
 #: coefficient of thermal expansion [1/K]: bearing steel (100Cr6 / AISI 52100, 11-12.5e-6) and
 #: silicon nitride (about 3.2e-6); the default of a ball material below 5000 kg/m3 is the ceramic's
@@ -182,6 +183,14 @@ def growth_checks(entry) -> list[tuple[tuple, str]]:
     except ValueError as exc:
         key = "temperatures_C" if entry.temperatures_C is not None else "fits_um"
         bad.append(((key,), str(exc)))
+    return bad
+
+
+def growth_plausibility(entry, at: tuple) -> Found:
+    """Likely unit mistakes among the keys of the growth (``fits_um``, the materials' expansion coefficients) of a
+    ball entry or the ``bearing:`` section at the key path ``at`` (``spindlesim/bearings/plausible.py``)."""
+    bad: Found = []
+    fits_and_expansions(entry, at, bad)
     return bad
 
 
