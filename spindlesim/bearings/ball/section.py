@@ -65,9 +65,8 @@ from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Load5, NodeNumber, NonNegFloat, PositiveFloat, Range
 from ..damping import RollingDamping
-from ..plausible import Found, metres, rolling_damping
 from .section_thermal import (BallFits, BallMaterial, BallMounting, BallTemperatures, growth_checks,  # noqa: F401
-                              growth_plausibility, thermal_inputs)
+                              growth_plausibility, plausibility, thermal_inputs, thermal_set)
 
 LoadComponent = Literal["fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm"]
 LOAD_COMPONENTS = ("fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm")
@@ -499,23 +498,8 @@ def _made_as(entry: _BallKeys, geometry, preload):
     return MadeAs(geometry, preload, thermo(entry.material), thermo(bm))
 
 
-# ---- what the family answers for itself (its row of BEARING_TYPES, bearings/types.py) ----------------------
-def plausibility(entry: BallBearingEntry, at: tuple) -> Found:
-    """Likely unit mistakes of the entry at the key path ``at``: its damping, its diameters (metres?), its fits
-    and expansion coefficients."""
-    bad: Found = []
-    rolling_damping(entry, at, bad)
-    metres(entry, at, ("pitch_diameter_mm", "ball_diameter_mm"), bad)
-    return bad + growth_plausibility(entry, at)
-
-
+# ---- what the family answers for itself (its row of BEARING_TYPES, bearings/types.py; the plausibility and the
+# thermal set with the keys of the growth: section_thermal.py) ----------------------------------------------------
 def holds_axially(entry: BallBearingEntry) -> bool:
     """A ball bearing (set) carries axial load (its contact angle; a deep-groove bearing's under load)."""
     return True
-
-
-def thermal_set(entry: BallBearingEntry, z_m: float):
-    """Its set in the spindle's thermal network (:func:`.thermal.thermal_set`)."""
-    from .thermal import thermal_set as of_entry
-
-    return of_entry(entry, z_m)
