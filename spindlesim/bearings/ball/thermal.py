@@ -26,9 +26,10 @@ from ..base import HeatReport, Lubrication
 from ..conductance import ball_set
 from ..rolling import RING_PROPORTION
 from .heat import STARVATION_K_RS, ContactFrictionOptions, ball_bearing_heat
+from .section_thermal import CERAMIC_DENSITY_BELOW_KG_M3
 
 #: a ball material below this density is a ceramic (silicon nitride: its expansion, conductivity and heat capacity)
-CERAMIC_BELOW_KG_M3 = 5000.0
+CERAMIC_BELOW_KG_M3 = CERAMIC_DENSITY_BELOW_KG_M3
 #: Si3N4 balls in the thermal network: 20-30 W/(m K), c_p 680-800 J/(kg K)
 SILICON_NITRIDE = Solid(25.0, 3200.0, 700.0)
 #: a light preload's ball load [N]: the first estimate of the contact conductances only
