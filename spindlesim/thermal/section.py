@@ -3,7 +3,7 @@
 The shaft, the bearings and the tool come from the rotor part of the deck; this section adds what the
 rotor does not say: the housing around the shaft, the cooling jacket, the built-in motor, the lubrication
 and the ambient; and when the analyses take the thermal state.  Every key carries its unit; the SI layout
-is built in ``spindlesim.analysis.spindle_thermal`` (it needs the rotor)::
+is built in ``spindlesim.model.thermal`` (it needs the rotor; each bearing family builds its own set)::
 
     spindle_thermal:
       ambient_C: 20
