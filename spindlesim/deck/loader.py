@@ -18,6 +18,7 @@ from typing import Any
 from pydantic import BaseModel, ValidationError
 
 from ..bearings.ball import section as ball_section
+from ..bearings.types import acts_radially_only, holds_axially, located_checks, network_bearings, network_types
 from ..fields import unit_range, unit_text
 from ..registry import ANALYSIS_REGISTRY, analysis_names
 from .document import bearing_types, deck_model, keys_at
@@ -32,8 +33,6 @@ log = logging.getLogger(__name__)
 ANALYSES = analysis_names()
 #: analyses of the rotor on its bearings: without a support the stiffness matrix is singular
 SUPPORTED_ANALYSES = tuple(a.name for a in ANALYSIS_REGISTRY if a.supported)
-#: bearing types that act on x and y only (no tilt or axial stiffness)
-RADIAL_ONLY = ("linear", "three_lobe", "plain", "roller")
 #: the smallest outer diameter and length of a beam element [mm] (1 um: below it the element's matrices lose
 #: every digit; a micro tool's flutes are some 10 um)
 MIN_ELEMENT_MM = 1e-3
@@ -239,8 +238,7 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
             bad.append((("bearings", i, "name"), f"duplicate bearing name {b.name!r} (also bearings[{seen[b.name]}])"))
         seen[b.name] = i
     for i, b in enumerate(d.bearings):
-        if getattr(b, "type", None) == "ball":
-            bad += [(("bearings", i) + path, msg) for path, msg in ball_section.located_checks(b)]
+        bad += [(("bearings", i) + path, msg) for path, msg in located_checks(b)]
     if getattr(d, "bearing", None) is not None:
         bad += [(("bearing",) + path, msg) for path, msg in ball_section.located_checks(d.bearing)]
     for i, load in enumerate(d.loads):
@@ -275,12 +273,11 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     if d.spindle_thermal is not None:
         if d.shaft is None:
             bad.append((("spindle_thermal",), "the spindle's thermal model needs a shaft (shaft: elements: ...)"))
-        from ..thermal.section import network_bearings
-
         sets, refused = network_bearings(d.bearings)
         if not sets:
-            bad.append((("spindle_thermal",), "the spindle's thermal model needs rolling-bearing entries (type: ball, "
-                                              "dtrb or roller)"))
+            *first, last = network_types()
+            bad.append((("spindle_thermal",), f"the spindle's thermal model needs rolling-bearing entries (type: "
+                                              f"{', '.join(first)} or {last})"))
         bad += [(("bearings", i, "model"), why) for i, _, why in refused]
         for i, b in sets:
             if b.temperatures_C is not None:
@@ -318,11 +315,11 @@ def require_rotor(loaded: LoadedDeck, analysis: str) -> None:
         raise DeckError([loaded.issue(("bearings",), f"the {analysis} analysis needs bearings that hold the rotor "
                                                      "(a rotor without supports has a singular stiffness matrix)")])
     issues = []
-    if d.shaft is not None and all(b.type in RADIAL_ONLY for b in d.bearings) and len({b.node for b in d.bearings}) == 1:
+    if d.shaft is not None and all(acts_radially_only(b) for b in d.bearings) and len({b.node for b in d.bearings}) == 1:
         issues.append(loaded.issue(("bearings", 0, "node"),
                                    f"the {analysis} analysis needs the shaft held at two nodes: these bearings act on "
                                    f"x and y only and all sit at node {d.bearings[0].node}, so the shaft can tilt freely"))
-    axial = [b for b in d.bearings if b.type == "ball" or (b.type == "dtrb" and b.dofs == 5)]
+    axial = [b for b in d.bearings if holds_axially(b)]
     if not axial:
         for i, p in enumerate(d.loads):
             if p.fz_N:
