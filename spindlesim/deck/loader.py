@@ -199,6 +199,27 @@ def _tool_library_checks(d: BaseModel, bad: list) -> None:
             if missing:
                 bad.append((("tools", i), f"tool {entry.name!r} needs {', '.join(missing)}: the deck has no tool: "
                                           "section to take them from"))
+        holder = entry.holder if entry.holder is not None else getattr(d.tool, "holder", None)
+        tool = entry.tool if entry.tool is not None else getattr(d.tool, "tool", None)
+        if entry.holder is not None or entry.tool is not None:
+            _shank_fits(holder, tool, ("tools", i, "tool" if entry.tool is not None else "holder"),
+                        entry.tool is not None, bad)
+
+
+#: a shank this much larger than the holder's bore [mm] does not go in (a shrink fit's interference is microns)
+SHANK_OVER_BORE_MM = 0.05
+
+
+def _shank_fits(holder, tool, where: tuple, at_tool: bool, bad: list) -> None:
+    """The tool's first row (its shank) must go into the holder's bore (the inner diameter of the holder's last
+    row), where both are given and the bore is open."""
+    if holder is None or tool is None or not holder.elements or not tool.elements:
+        return
+    bore, shank = float(holder.elements[-1][1]), float(tool.elements[0][0])
+    if bore > 0.0 and shank > bore + SHANK_OVER_BORE_MM:
+        at = where + ("elements", 0, 0) if at_tool else where + ("elements", len(holder.elements) - 1, 1)
+        bad.append((at, f"the tool's shank (outer_dia_mm {shank:g} of its first row) is larger than the holder's "
+                        f"bore (inner_dia_mm {bore:g} of the holder's last row): it does not go in"))
 
 
 def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
@@ -213,6 +234,7 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     if d.tool is not None:
         _row_checks(d.tool.holder.elements, ("tool", "holder", "elements"), bad)
         _row_checks(d.tool.tool.elements, ("tool", "tool", "elements"), bad)
+        _shank_fits(d.tool.holder, d.tool.tool, ("tool", "tool"), True, bad)
     n_nodes = len(rows) + 1 if d.shaft is not None else 1
     if d.tool is not None and d.shaft is not None:
         if d.tool.holder_node not in (1, n_nodes):

@@ -103,6 +103,13 @@ BAD = [
     ("  - name: em16_shrink_90 ", "  - name: em16_shrink_60 ", "tools[1].name", "duplicate tool name"),
     ("  - name: em8_shrink_32\n", "  - name: a/b\n", "tools[2].name", "no '/'"),
     ("        - [8.0, 0.0, 12.0,", "        - [8.0, 9.0, 12.0,", "tools[2].tool.elements[0][1]", "inner_dia_mm"),
+    # issue 33, item 4: a 12 mm shank into the 8 mm bore of its shrink-fit chuck does not go in
+    ("        - [8.0, 0.0, 12.0,", "        - [12.0, 0.0, 12.0,", "tools[2].tool.elements[0][0]",
+     "larger than the holder's bore (inner_dia_mm 8"),
+    # ... nor the 16 mm end mill of the tool: section into a holder bored for 12 mm
+    ("  - name: em16_shrink_90             # the same end mill 90 mm out of the same chuck\n",
+     "  - name: em16_shrink_90\n    holder:\n      elements:\n        - [63.0, 12.0, 20.0, 7850.0, 210.0, 80.8, 0.3, 0.0]\n",
+     "tools[1].tool.elements[0][0]", "bore (inner_dia_mm 12 of the holder's last row): it does not go in"),
 ]
 
 
