@@ -4,7 +4,7 @@ Targets of the issue for the whole thermo-mechanical model (this script times th
 steady state of the milling spindle at one speed under 0.2 s, a two-hour warm-up with five speed
 steps under 10 s.  Network-side aims: a linear steady solve ~1 ms, a warm-up well under 1 s.
 
-Prints, for the example milling spindle (spindlesim/thermal/examples.py, 48 nodes): building the
+Prints, for the example milling spindle (spindlesim/model/thermal_example.py, 48 nodes): building the
 network, one conductance evaluation, a linear steady solve, the temperature-dependent steady
 state (Picard), the two-hour warm-up (BDF, temperature-dependent and frozen conductances,
 implicit Euler at 30 s), and a 100-node chain for scale.
@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.dirname(__file__))
 import numpy as np  # noqa: E402
 from timing import best  # noqa: E402
 
-from spindlesim.thermal.examples import milling_spindle_layout  # noqa: E402
+from spindlesim.model.thermal_example import milling_spindle_layout  # noqa: E402
 from spindlesim.thermal.network import Conductance, Network, Node  # noqa: E402
 from spindlesim.thermal.spindle_network import BearingHeat, build_spindle_network  # noqa: E402
 from spindlesim.thermal.transient import StepProfile  # noqa: E402

@@ -2,8 +2,8 @@
 
 :func:`thermal_study`: the thermal equilibrium at each speed from the lowest up (a speed that runs away ends the
 list: the arrangement's speed limit, bisected to 2 %); with a warm-up, the spindle through its speed steps from
-cold, with the rotor's first natural frequencies and, given ``depth_through``, the minimum stable depth of cut at
-each instant.  A part that fails (an instant's modes or lobes) is NaN with its reason in ``missing``; a Ctrl-C
+cold, with the rotor's first natural frequencies and, given ``depth_through``, the stable depth of cut at each
+instant's speed.  A part that fails (an instant's modes or lobes) is NaN with its reason in ``missing``; a Ctrl-C
 stops the study where it is and the result keeps what was computed (``interrupted`` says where).
 """
 
@@ -29,11 +29,12 @@ PART_ERRORS = (np.linalg.LinAlgError, ArithmeticError, ValueError)
 @dataclass(frozen=True)
 class WarmUp:
     """The spindle at the instants of a warm-up: its states, the rotor's first natural frequencies [time, mode]
-    and the minimum stable depth of cut (``warm_up_chatter.MinimumDepth``; None without a chatter section)."""
+    and the stable depth of cut at each instant's speed (``warm_up_chatter.StableDepth``; None without a chatter
+    section taking its FRF from the rotor)."""
 
     states: tuple[ThermalState, ...]
     frequency_hz: np.ndarray
-    minimum_depth: object | None = None
+    stable_depth: object | None = None
 
 
 @dataclass(frozen=True)
@@ -75,7 +76,7 @@ def thermal_study(points, speeds_rpm: Sequence[float], warm_up=None,
                   depth_through: Callable | None = None,
                   progress: Callable[[int, int], None] | None = None, quiet: bool = False) -> ThermalStudy:
     """The module note's study on ``points`` (operating points with a steady thermal model); ``warm_up`` the
-    model's ``WarmUpSpec`` (or None), ``depth_through(points, instants)`` the minimum stable depth through it;
+    model's ``WarmUpSpec`` (or None), ``depth_through(points, instants)`` the stable depth of cut through it;
     ``quiet``: the runaway that ends the list is logged as information, not as a warning (another analysis
     asking for the speed limit)."""
     thermal = points.thermal
@@ -135,7 +136,7 @@ def _warm_up(points, w, depth_through, runaway, missing: list[str]):
         try:
             depth = depth_through(points, instants)
         except PART_ERRORS as exc:
-            missing.append(f"warm-up minimum stable depth of cut failed: {exc}")
+            missing.append(f"warm-up stable depth of cut failed: {exc}")
         if depth is not None:
-            missing.extend(f"warm-up minimum stable depth of cut: {m}" for m in depth.failures)
+            missing.extend(f"warm-up stable depth of cut: {m}" for m in depth.failures)
     return WarmUp(instants, np.array(freqs), depth), runaway

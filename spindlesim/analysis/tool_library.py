@@ -155,6 +155,8 @@ class ToolLibraryStudy:
 
     library: ToolLibrary
     lobes: tuple[ToolLobes, ...] = ()
+    #: where a Ctrl-C stopped the lobes ("": it did not): the receptances and the tools' lobes before it are kept
+    interrupted: str = ""
 
 
 def tool_library_study(model: ToolLibraryModel, speed_rpm: float, frequency_hz, bearings: Sequence | None = None,
@@ -169,8 +171,14 @@ def tool_library_study(model: ToolLibraryModel, speed_rpm: float, frequency_hz, 
             progress(done, steps)
 
     library = couple_tools(model, speed_rpm, frequency_hz, bearings, progress=tick)
-    lobes = []
+    lobes: list[ToolLobes] = []
     for k, (name, points) in enumerate(lobes_of):
-        lobes.append(tool_lobes(name, points, spec, speed_rpm, speed_limit_rpm))
+        try:
+            lobes.append(tool_lobes(name, points, spec, speed_rpm, speed_limit_rpm))
+        except KeyboardInterrupt:
+            why = (f"interrupted by the user in the lobes of tool {name!r}: the receptances of every tool and the "
+                   f"lobes of {k} of {len(lobes_of)} tools are written")
+            log.warning("tools: %s", why)
+            return ToolLibraryStudy(library, tuple(lobes), why)
         tick(len(model.tools) + k + 1, steps)
     return ToolLibraryStudy(library, tuple(lobes))

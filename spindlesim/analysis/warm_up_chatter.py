@@ -1,73 +1,91 @@
-"""The minimum stable depth of cut through a warm-up.
+"""The stable depth of cut through a warm-up, at the speed the spindle runs.
 
 At each instant of a warm-up the bearings sit at that instant's temperatures and preload, so the tool-point
-FRF, and with it the lobe diagram, drifts as the spindle warms.  Each instant's tool-point model (the full
-state space of the rotor on its bearings at that state, ``tool_point.state_space``) gives the zero-order
-(Altintas-Budak) lobes over the ``chatter:`` section's speeds, and their minimum is the depth that instant
-allows at any of those speeds.  The bearings are held at the instant's own state for every speed of the
-diagram (the spindle's temperatures change in minutes, a speed is changed in seconds).
-
-Zero order is the trend's method, chosen for its cost (about 0.3 s an instant on the milling spindle against
-several seconds a speed for the semi-discretization); it can over-promise a lobe's depth at low radial
-immersion, but the minimum of the envelope is close to the semi-discretization's where one tooth or more is
-in the cut (milling spindle: 0.744 mm against 0.741 mm, docs/validation.md).  The figure and thermal.h5 say
-so; `spindlesim chatter` on the same deck gives the full diagram at the steady state.
+FRF, and with it the lobe diagram, drifts as the spindle warms: a pocket found cold may lie on a lobe's
+flank an hour later.  At each instant the limit depth at the instant's own speed is solved with the
+``chatter:`` section's method and options (the semi-discretization for milling with a fluctuating
+directional matrix), on the tool-point model of that instant (the full state space of the rotor on its
+bearings at that state, ``tool_point.state_space``): the method and the number of ``spindlesim chatter``, whose
+diagram at a speed holds the bearings at that speed's thermal equilibrium; at the end of a step long enough to
+settle, the two agree (tests/validation/test_warm_up_chatter.py).  One speed an instant, not the whole diagram:
+about 0.3 s an instant on the milling spindle instead of several seconds.  An instant at rest (speed 0) cuts
+nothing: NaN.  The minimum over every speed stays the steady-state diagram's (``spindlesim chatter``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Mapping
 
 import numpy as np
 
-from ..chatter import zero_order_lobes
+from ..chatter import stability_lobes
 from .points import OperatingPoints
 from .tool_point import point_dofs, state_space
 
-__all__ = ["MinimumDepth", "minimum_depth_through"]
-
-METHOD = "zero order (Altintas-Budak), the FRF of each instant at every speed"
+__all__ = ["StableDepth", "method_text", "stable_depth_through"]
 
 
 @dataclass(frozen=True)
-class MinimumDepth:
-    """Per instant: the smallest limit depth [m] over the speeds, the speed [rpm] and chatter frequency [Hz]
-    where it falls (NaN at an instant whose lobes failed; ``failures`` says which and why)."""
+class StableDepth:
+    """Per instant: the limit depth of cut [m] at the instant's speed [rpm] and the chatter frequency [Hz] there;
+    NaN at rest, where the speed is stable up to the depth cap (``capped``, the cap in ``depth_cap_m``) and at an
+    instant whose lobes failed (``failures`` says which and why).  ``method``: how it was solved."""
 
     depth_m: np.ndarray
     speed_rpm: np.ndarray
     chatter_frequency_hz: np.ndarray
-    method: str = METHOD
-    failures: tuple[str, ...] = ()
+    capped: np.ndarray
+    depth_cap_m: np.ndarray
+    method: str
+    failures: tuple[str, ...] = field(default=())
+
+    @property
+    def lowest(self) -> int | None:
+        """Index of the instant with the smallest limit depth (None when none was found)."""
+        return int(np.nanargmin(self.depth_m)) if np.isfinite(self.depth_m).any() else None
 
 
-def minimum_depth_through(points: OperatingPoints, states, process, speeds_rpm,
-                          node: int | None = None) -> MinimumDepth:
-    """The module note's minimum depth at each of ``states`` (``spindle_thermal.ThermalState`` instants);
-    instants that share one operating state (the two sides of a speed step) are solved once.  An instant whose
-    lobes fail (a linear-algebra or arithmetic failure) is NaN and named in ``failures``; the others are kept."""
-    speeds = np.asarray(speeds_rpm, float)
+_NAMES = {"semi_discretization": "semi-discretization", "zero_order": "zero order", "oriented_frf": "oriented FRF"}
+
+
+def method_text(process, method: str) -> str:
+    """How the depths were solved, for the file and the figure."""
+    name = process.method_for(method)
+    return (f"{_NAMES.get(name, name)} (the chatter section's method) at the instant's own speed, with the "
+            "tool-point FRF of that instant")
+
+
+def stable_depth_through(points: OperatingPoints, states, process, method: str = "auto",
+                         options: Mapping | None = None, node: int | None = None) -> StableDepth:
+    """The module note's depth at each of ``states`` (``spindle_thermal.ThermalState`` instants) with ``method`` and
+    its ``options`` (the chatter section's); instants that share one operating state (the two sides of a speed
+    step) are solved once.  An instant whose lobes fail (a linear-algebra or arithmetic failure) is NaN and named
+    in ``failures``; the others are kept."""
+    opts = dict(options or {}) | {"stability_map": False}
     _, tip = point_dofs(points.rotor, node)
-    done: dict[int, tuple[float, float, float]] = {}
+    done: dict[int, tuple[float, float, bool, float]] = {}
     rows, failures = [], []
     for ts in states:
         key = id(ts.operating)
         if key not in done:
-            sysm = points.system(ts.operating)
-            try:
-                diagram = zero_order_lobes(process, state_space(sysm, np.eye(sysm.size)[:, tip]), speeds)
-            except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
-                when = "" if ts.time_s is None else f" at {ts.time_s / 60.0:.1f} min"
-                failures.append(f"lobes{when} ({ts.speed_rpm:g} rpm) failed: {exc}")
-                done[key] = (np.nan, np.nan, np.nan)
-                rows.append(done[key])
-                continue
-            lim = diagram.limit_depth_m
-            if np.isfinite(lim).any():
-                i = int(np.nanargmin(lim))
-                done[key] = (float(lim[i]), float(speeds[i]), float(diagram.chatter_frequency_hz[i]))
-            else:
-                done[key] = (np.nan, np.nan, np.nan)
-        rows.append(done[key])
-    a = np.array(rows, float).reshape(len(rows), 3)
-    return MinimumDepth(a[:, 0], a[:, 1], a[:, 2], failures=tuple(failures))
+            done[key] = (np.nan, np.nan, False, np.nan)
+            rpm = float(ts.speed_rpm)
+            if rpm > 0.0:
+                sysm = points.system(ts.operating)
+                try:
+                    dg = stability_lobes(process, state_space(sysm, np.eye(sysm.size)[:, tip]), [rpm], method,
+                                         **opts)
+                except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
+                    when = "" if ts.time_s is None else f" at {ts.time_s / 60.0:.1f} min"
+                    failures.append(f"lobes{when} ({rpm:g} rpm) failed: {exc}")
+                else:
+                    capped = bool(len(dg.capped) and dg.capped[0])
+                    done[key] = (float(dg.limit_depth_m[0]), float(dg.chatter_frequency_hz[0]), capped,
+                                 float(dg.depth_cap_m))
+        rows.append((float(ts.speed_rpm),) + done[key])
+    speed = np.array([r[0] for r in rows], float)
+    return StableDepth(np.array([r[1] for r in rows], float), speed, np.array([r[2] for r in rows], float),
+                       np.array([r[3] for r in rows], bool), np.array([r[4] for r in rows], float),
+                       method_text(process, method), tuple(failures))
+

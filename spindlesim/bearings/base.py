@@ -88,6 +88,14 @@ outputs(q, v, t, speed, angle=None) -> dict[str, tuple[np.ndarray, str]]
 
 The speed is always passed in, never stored on the bearing, so one bearing object serves every
 speed of a Campbell diagram and every instant of a run-up.
+
+The spindle's thermal network
+-----------------------------
+Besides ``at_temperatures`` and ``heat`` above, what the network asks of a family is answered by its row of
+``BEARING_TYPES`` (``bearings/types.py``: ``thermal_set(entry, z_m)``, the family's set at a position, and
+``thermal_refusal``) and by the set it builds: a :class:`spindlesim.thermal.layout.BearingSet` carrying the
+family's contact paths (:class:`spindlesim.thermal.layout.ContactPaths`, ``bearings/conductance.py``): its
+rolling elements and their conductances at a state (speed, contact loads, films, cavity temperature).
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Prescribed part temperatures of a rolling bearing in a deck (``temperatures_C``), shared by the families
 whose operating preload or clearance follows from them (DTRB, cylindrical roller; the ball bearing has its
-own, with shaft and housing seats: ``ball/section_thermal.py``).  Deck model only; the growth itself is
-:mod:`spindlesim.thermal.growth_bearings`."""
+own, with shaft and housing seats: ``ball/section_thermal.py``).  Deck model only; the growth itself is each
+family's (``dtrb/thermal.py``, ``roller/thermal.py``) on :mod:`spindlesim.thermal.growth_bearings`."""
 
 from __future__ import annotations
 

@@ -87,7 +87,7 @@ def _run(deck, outdir, report: bool = True) -> None:
                 book.failed(name, exc)
                 failed.append(name)
     if report:
-        _optimize_results(loaded, out, book)
+        _studies_written(loaded, out, book)
     if report and not _write_report(book, written):
         failed.append("report")
     print_results(written)
@@ -129,21 +129,24 @@ def _write_report(book, written: list) -> bool:
     return True
 
 
-def _optimize_results(loaded, out, book) -> None:
-    """A deck with an ``optimize:`` section: the study `spindlesim optimize` wrote into the run's folder
-    (``optimize/``, its default beside the run's files) joins the report; `run` does not run it."""
-    if getattr(loaded.deck, "optimize", None) is None:
-        return
+def _studies_written(loaded, out, book) -> None:
+    """A deck with a ``calibration:`` or ``optimize:`` section: the study `spindlesim calibrate` or `spindlesim
+    optimize` wrote with its default folder (calibration.h5 beside the run's files, ``optimize/`` below them) joins
+    the report; `run` runs neither."""
     from pathlib import Path
 
     from ..sweep.optimize_run import written_study
 
-    found = written_study(Path(out) / "optimize")
-    if found is None:
-        return
-    paths, reason = found
-    book.names.append("optimize")
-    if reason:
-        book.incomplete("optimize", paths, reason)
-    else:
-        book.done("optimize", paths)
+    for section, folder, stem in (("calibration", Path(out), "calibration"),
+                                  ("optimize", Path(out) / "optimize", "optimize")):
+        if getattr(loaded.deck, section, None) is None:
+            continue
+        found = written_study(folder, stem)
+        if found is None:
+            continue
+        paths, reason = found
+        book.names.append(stem)
+        if reason:
+            book.incomplete(stem, paths, reason)
+        else:
+            book.done(stem, paths)

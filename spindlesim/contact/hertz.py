@@ -26,8 +26,8 @@ import numpy as np
 from scipy.special import ellipe, ellipk
 
 __all__ = [
-    "EXPONENT_LINE", "EXPONENT_POINT", "combined_modulus", "line_contact", "line_contact_constant",
-    "palmgren_deflection_m", "palmgren_stiffness", "point_contact", "point_contact_circular",
+    "EXPONENT_LINE", "EXPONENT_POINT", "combined_modulus", "ellipticity_estimate", "line_contact",
+    "line_contact_constant", "palmgren_deflection_m", "palmgren_stiffness", "point_contact", "point_contact_circular",
     "point_contact_constant", "point_contact_semi_axes_estimate", "power_law", "series_stiffness",
     "stribeck_max_roller_load",
 ]
@@ -111,16 +111,23 @@ def point_contact_constant(curvature_1: float, curvature_2: float, e_star_pa: fl
     return delta ** -1.5
 
 
+def ellipticity_estimate(r_short_m: float, r_long_m: float) -> float:
+    """Hamrock and Brewe's ellipticity k = a/b = 1.0339 (R_long/R_short)^0.636 of an elliptical contact of
+    radii R_short <= R_long (below: the semi-axes; the EHL film of the thermal network's contacts)."""
+    return 1.0339 * (r_long_m / r_short_m) ** 0.636
+
+
 def point_contact_semi_axes_estimate(load_n: float, rx_m: float, ry_m: float, e_star_pa: float
                                      ) -> tuple[float, float]:
     """Approximate semi-axes (a_x, a_y) [m] of an elliptical contact of radii rx, ry.
 
     Hamrock and Brewe, J. Lubr. Technol. 105 (1983) 171-177 (ellipticity k = 1.0339
     (R_long/R_short)^0.636, E ~ 1.0003 + 0.5968 R_short/R_long): a few % off the exact
-    :func:`point_contact`; used to size grids and as the reference the exact form is checked against.
+    :func:`point_contact`; used to size grids, as the reference the exact form is checked against, and for
+    the contact ellipses of the thermal network's conductances (``bearings/conductance.py``).
     """
     r_short, r_long = min(rx_m, ry_m), max(rx_m, ry_m)
-    k = 1.0339 * (r_long / r_short) ** 0.636
+    k = ellipticity_estimate(r_short, r_long)
     ell = 1.0003 + 0.5968 * r_short / r_long
     r = 1.0 / (1.0 / rx_m + 1.0 / ry_m)
     e_prime = 2.0 * e_star_pa

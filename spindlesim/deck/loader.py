@@ -18,6 +18,7 @@ from typing import Any
 from pydantic import BaseModel, ValidationError
 
 from ..bearings.ball import section as ball_section
+from ..bearings.types import acts_radially_only, holds_axially, located_checks, network_bearings, network_types
 from ..fields import unit_range, unit_text
 from ..registry import ANALYSIS_REGISTRY, analysis_names
 from .document import bearing_types, deck_model, keys_at
@@ -32,8 +33,6 @@ log = logging.getLogger(__name__)
 ANALYSES = analysis_names()
 #: analyses of the rotor on its bearings: without a support the stiffness matrix is singular
 SUPPORTED_ANALYSES = tuple(a.name for a in ANALYSIS_REGISTRY if a.supported)
-#: bearing types that act on x and y only (no tilt or axial stiffness)
-RADIAL_ONLY = ("linear", "three_lobe", "plain", "roller")
 #: the smallest outer diameter and length of a beam element [mm] (1 um: below it the element's matrices lose
 #: every digit; a micro tool's flutes are some 10 um)
 MIN_ELEMENT_MM = 1e-3
@@ -200,6 +199,27 @@ def _tool_library_checks(d: BaseModel, bad: list) -> None:
             if missing:
                 bad.append((("tools", i), f"tool {entry.name!r} needs {', '.join(missing)}: the deck has no tool: "
                                           "section to take them from"))
+        holder = entry.holder if entry.holder is not None else getattr(d.tool, "holder", None)
+        tool = entry.tool if entry.tool is not None else getattr(d.tool, "tool", None)
+        if entry.holder is not None or entry.tool is not None:
+            _shank_fits(holder, tool, ("tools", i, "tool" if entry.tool is not None else "holder"),
+                        entry.tool is not None, bad)
+
+
+#: a shank this much larger than the holder's bore [mm] does not go in (a shrink fit's interference is microns)
+SHANK_OVER_BORE_MM = 0.05
+
+
+def _shank_fits(holder, tool, where: tuple, at_tool: bool, bad: list) -> None:
+    """The tool's first row (its shank) must go into the holder's bore (the inner diameter of the holder's last
+    row), where both are given and the bore is open."""
+    if holder is None or tool is None or not holder.elements or not tool.elements:
+        return
+    bore, shank = float(holder.elements[-1][1]), float(tool.elements[0][0])
+    if bore > 0.0 and shank > bore + SHANK_OVER_BORE_MM:
+        at = where + ("elements", 0, 0) if at_tool else where + ("elements", len(holder.elements) - 1, 1)
+        bad.append((at, f"the tool's shank (outer_dia_mm {shank:g} of its first row) is larger than the holder's "
+                        f"bore (inner_dia_mm {bore:g} of the holder's last row): it does not go in"))
 
 
 def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
@@ -214,6 +234,7 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     if d.tool is not None:
         _row_checks(d.tool.holder.elements, ("tool", "holder", "elements"), bad)
         _row_checks(d.tool.tool.elements, ("tool", "tool", "elements"), bad)
+        _shank_fits(d.tool.holder, d.tool.tool, ("tool", "tool"), True, bad)
     n_nodes = len(rows) + 1 if d.shaft is not None else 1
     if d.tool is not None and d.shaft is not None:
         if d.tool.holder_node not in (1, n_nodes):
@@ -239,8 +260,7 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
             bad.append((("bearings", i, "name"), f"duplicate bearing name {b.name!r} (also bearings[{seen[b.name]}])"))
         seen[b.name] = i
     for i, b in enumerate(d.bearings):
-        if getattr(b, "type", None) == "ball":
-            bad += [(("bearings", i) + path, msg) for path, msg in ball_section.located_checks(b)]
+        bad += [(("bearings", i) + path, msg) for path, msg in located_checks(b)]
     if getattr(d, "bearing", None) is not None:
         bad += [(("bearing",) + path, msg) for path, msg in ball_section.located_checks(d.bearing)]
     for i, load in enumerate(d.loads):
@@ -275,12 +295,11 @@ def _physics_checks(d: BaseModel) -> list[tuple[tuple[Any, ...], str]]:
     if d.spindle_thermal is not None:
         if d.shaft is None:
             bad.append((("spindle_thermal",), "the spindle's thermal model needs a shaft (shaft: elements: ...)"))
-        from ..thermal.section import network_bearings
-
         sets, refused = network_bearings(d.bearings)
         if not sets:
-            bad.append((("spindle_thermal",), "the spindle's thermal model needs rolling-bearing entries (type: ball, "
-                                              "dtrb or roller)"))
+            *first, last = network_types()
+            bad.append((("spindle_thermal",), f"the spindle's thermal model needs rolling-bearing entries (type: "
+                                              f"{', '.join(first)} or {last})"))
         bad += [(("bearings", i, "model"), why) for i, _, why in refused]
         for i, b in sets:
             if b.temperatures_C is not None:
@@ -318,11 +337,11 @@ def require_rotor(loaded: LoadedDeck, analysis: str) -> None:
         raise DeckError([loaded.issue(("bearings",), f"the {analysis} analysis needs bearings that hold the rotor "
                                                      "(a rotor without supports has a singular stiffness matrix)")])
     issues = []
-    if d.shaft is not None and all(b.type in RADIAL_ONLY for b in d.bearings) and len({b.node for b in d.bearings}) == 1:
+    if d.shaft is not None and all(acts_radially_only(b) for b in d.bearings) and len({b.node for b in d.bearings}) == 1:
         issues.append(loaded.issue(("bearings", 0, "node"),
                                    f"the {analysis} analysis needs the shaft held at two nodes: these bearings act on "
                                    f"x and y only and all sit at node {d.bearings[0].node}, so the shaft can tilt freely"))
-    axial = [b for b in d.bearings if b.type == "ball" or (b.type == "dtrb" and b.dofs == 5)]
+    axial = [b for b in d.bearings if holds_axially(b)]
     if not axial:
         for i, p in enumerate(d.loads):
             if p.fz_N:

@@ -27,7 +27,8 @@ def optimize(f):
         lines.append(f"  first failure, evaluation {first}: {errors[first]}")
     data: dict = {"evaluations": n, "failed": failed, "pareto": pareto}
     if not pareto:
-        lines.append("no feasible design found")
+        lines.append("no feasible design found" + ("" if failed == n else "; the constraints over the designs evaluated:"))
+        lines.extend(_constraints_reached(str(a.get("constraints", "")), results, units, Y, errors))
         return lines, data
     best = int(a["best"])
     if best >= 0:
@@ -51,3 +52,28 @@ def optimize(f):
             lines.append(f"    its best end (evaluation {end}): "
                          + ", ".join(f"{nm} = {text[end, j]}" for j, nm in enumerate(names)))
     return lines, data
+
+
+def _constraints_reached(constraints: str, results: list[str], units: list[str], Y: np.ndarray, errors) -> list[str]:
+    """Each constraint as optimize.h5 states it ("name <= b", "a <= name", "a <= name <= b") with the range its
+    result took over the designs that did not fail, and how many met it: what to relax when none is feasible."""
+    ok = np.array([not e for e in errors], bool)
+    out = []
+    for c in filter(None, (t.strip() for t in constraints.split(";"))):
+        tokens = c.split()
+        names = [t for t in tokens if t in results]
+        if len(names) != 1 or not ok.any():
+            continue
+        j = tokens.index(names[0])
+        try:
+            lo = float(tokens[j - 2]) if j >= 2 and tokens[j - 1] == "<=" else -np.inf
+            hi = float(tokens[j + 2]) if j + 2 < len(tokens) and tokens[j + 1] == "<=" else np.inf
+            if j + 2 < len(tokens) and tokens[j + 1] == ">=":
+                lo = float(tokens[j + 2])
+        except ValueError:
+            continue
+        k = results.index(names[0])
+        v = Y[ok, k]
+        met = int(np.sum((v >= lo) & (v <= hi)))
+        out.append(f"  {c}: {np.nanmin(v):.6g} .. {np.nanmax(v):.6g} {units[k]}".rstrip() + f"; met by {met} of {len(v)}")
+    return out

@@ -83,7 +83,7 @@ CAPTIONS: dict[str, str] = {
     "thermal_speeds": "Thermal equilibrium over speed: ring and motor temperatures, operating preload, tool-tip "
                       "axial drift; the runaway speed marked",
     "thermal_warm_up": "Warm-up through the speed steps: temperatures, preload, tool-tip axial drift (ISO 230-3 "
-                       "style), natural frequencies and the minimum stable depth of cut",
+                       "style), natural frequencies and the stable depth of cut at the running speed",
     "chatter_simulation_": "Time-domain simulation of the cut (vibration, spectrum, once-per-tooth Poincare set), "
                            "check",
     "ball_load_distribution": "Ball loads and contact angles around the bearing",

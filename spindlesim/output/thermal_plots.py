@@ -88,10 +88,10 @@ def speeds_figure(t, title: str = ""):
 
 def warm_up_figure(t, title: str = ""):
     """A warm-up: temperatures, operating preload, the tool tip's axial drift (ISO 230-3 style), the first
-    natural frequencies and (with a chatter section) the minimum stable depth of cut against time, every other speed step shaded and labelled with its speed."""
+    natural frequencies and (with a chatter section) the stable depth of cut at the running speed against time, every other speed step shaded and labelled with its speed."""
     minutes = t.x / 60.0
     drift = _has_drift(t)
-    n = 2 + drift + (t.frequency_hz is not None) + (t.min_depth_m is not None)
+    n = 2 + drift + (t.frequency_hz is not None) + (t.depth_m is not None)
     fig = new_figure(9, 2.6 * n + 0.8, layout=None)
     axes = fig.subplots(n, 1, sharex=True)
     _temperatures(axes[0], minutes, t, None)
@@ -107,13 +107,13 @@ def warm_up_figure(t, title: str = ""):
                     lw=lw, label=f"mode {k + 1}", zorder=3 + k)
         ax.set_ylabel("natural frequency [Hz]")
         ax.legend(fontsize=7, ncols=4, loc="upper left")
-    if t.min_depth_m is not None:
+    if t.depth_m is not None:
         ax = axes[-1]
-        ax.plot(minutes, 1e3 * t.min_depth_m, "-o", ms=3, color="C3",
-                label="minimum over the chatter speeds (zero order, the FRF of each instant)")
-        ax.set_ylabel("min. stable depth [mm]")
-        ax.set_ylim(bottom=0.0, top=1.15 * max(float(np.nanmax(1e3 * t.min_depth_m)), 1e-6)
-                    if np.isfinite(t.min_depth_m).any() else None)
+        ax.plot(minutes, 1e3 * t.depth_m, "-o", ms=3, color="C3",
+                label="at the running speed (the chatter section's method, the FRF of each instant)")
+        ax.set_ylabel("stable depth [mm]")
+        ax.set_ylim(bottom=0.0, top=1.15 * max(float(np.nanmax(1e3 * t.depth_m)), 1e-6)
+                    if np.isfinite(t.depth_m).any() else None)
         ax.legend(fontsize=7, loc="lower left")
     axes[-1].set_xlabel("time [min]")
     starts = np.concatenate([[0], np.flatnonzero(np.diff(t.speed_rpm)) + 1])

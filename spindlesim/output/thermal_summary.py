@@ -56,17 +56,34 @@ def spindle_thermal(f):
         lines.append(line)
         data["warm_up_final_drift_m"] = float(drift[-1])
         if "chatter" in w:
-            dm = w["chatter"]["min_limit_depth_m"][:]
-            if np.isfinite(dm).any():
-                k = int(np.nanargmin(dm))
-                lines.append(f"  minimum stable depth of cut (zero order) {dm[0] * 1e3:.3g} mm cold -> "
-                             f"{dm[-1] * 1e3:.3g} mm at the end; lowest {dm[k] * 1e3:.3g} mm at {t[k] / 60:.0f} min")
-                data["warm_up_min_depth_m"] = [float(v) for v in dm]
-            missing = int(np.sum(~np.isfinite(dm)))
-            if missing:
-                lines.append(f"  minimum stable depth of cut NOT COMPUTED at {missing} of {len(dm)} instants "
-                             f"(thermal.h5: warm_up/chatter, attribute not_computed)")
+            lines.extend(_warm_up_depth(w["chatter"], t, data))
     return lines, data
+
+
+def _warm_up_depth(c, t, data) -> list[str]:
+    """The stable depth of cut at the running speed through a warm-up: cold, at the end of the last cutting
+    step, the lowest, and the instants not computed."""
+    dm, rpm = c["limit_depth_m"][:], c["speed_rpm"][:]
+    capped = c["capped"][:].astype(bool) if "capped" in c else np.zeros(len(dm), bool)
+    method = str(c.attrs.get("method", "")).split(" (")[0]
+    lines = []
+
+    def at(i: int) -> str:
+        return f"{dm[i] * 1e3:.3g} mm at {rpm[i]:,.0f} rpm ({t[i] / 60:.0f} min)"
+
+    ok = np.flatnonzero(np.isfinite(dm))
+    if len(ok):
+        k = int(ok[np.argmin(dm[ok])])
+        lines.append(f"  stable depth of cut at the running speed ({method}): {at(ok[0])} -> {at(ok[-1])}; "
+                     f"lowest {at(k)}")
+        data["warm_up_limit_depth_m"] = [float(v) for v in dm]
+    if capped.any():
+        lines.append(f"  stable up to the depth cap at {int(capped.sum())} instant(s)")
+    missing = int(np.sum(~np.isfinite(dm) & ~capped & (rpm > 0)))
+    if missing:
+        lines.append(f"  stable depth of cut NOT COMPUTED at {missing} of {len(dm)} instants "
+                     f"(thermal.h5: warm_up/chatter, attribute not_computed)")
+    return lines
 
 
 def _preload(row_thrust) -> str:

@@ -35,13 +35,13 @@ class ThermalTable:
     drift_m: np.ndarray
     frequency_hz: np.ndarray | None = None
     runaway_rpm: float | None = None
-    min_depth_m: np.ndarray | None = None  # warm-up with a chatter section: the minimum stable depth
+    depth_m: np.ndarray | None = None  # warm-up with a chatter section: the stable depth at each speed
     radial_m: np.ndarray | None = None  # [x, 2] the tool tip's radial drift x, y
     limit_rpm: tuple[float, float] | None = None  # the speed limit (highest stable, lowest running away)
 
 
 def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: bool = False,
-             min_depth_m=None, limit_rpm=None) -> ThermalTable:
+             depth_m=None, limit_rpm=None) -> ThermalTable:
     x = np.array([s.time_s if in_time else s.speed_rpm for s in states], float)
     motor = "motor:rotor" in states[0].temperatures_C if states else False
     return ThermalTable(
@@ -54,7 +54,7 @@ def tabulate(states, bearings, frequency_hz=None, runaway_rpm=None, in_time: boo
         np.array([s.temperatures_C["motor:stator"] for s in states]) if motor else None,
         np.array([np.nan if s.tool_tip_axial_drift_m is None else s.tool_tip_axial_drift_m for s in states], float),
         None if frequency_hz is None else np.asarray(frequency_hz, float), runaway_rpm,
-        None if min_depth_m is None else np.asarray(min_depth_m, float), _radial(states),
+        None if depth_m is None else np.asarray(depth_m, float), _radial(states),
         None if limit_rpm is None else (float(limit_rpm[0]), float(limit_rpm[1])))
 
 
@@ -170,17 +170,19 @@ def write_spindle_thermal(path: Path, run: RunInfo, model, study) -> Path:
                                                  "first damped natural frequencies of the rotor on its bearings at "
                                                  "the temperatures of that instant", fill_nan=True)
         data.update(_common(w, warm.states, bearings, nodes, sources, boundaries, "time_s"))
-        md = warm.minimum_depth
-        if md is not None:
-            c = f"{w}/chatter"
-            data[f"{c}/time_s"] = (np.array([s.time_s for s in warm.states]), "s", ("time_s",))
-            data[f"{c}/min_limit_depth_m"] = Data(md.depth_m, "m", ("time_s",),
-                                                   "smallest limit depth of cut over the chatter section's speeds, "
-                                                   "the tool-point FRF of that instant", fill_nan=True)
-            data[f"{c}/speed_rpm"] = Data(md.speed_rpm, "rpm", ("time_s",), "speed of that minimum", fill_nan=True)
-            data[f"{c}/chatter_frequency_hz"] = Data(md.chatter_frequency_hz, "Hz", ("time_s",),
-                                                     "chatter frequency there", fill_nan=True)
-            attrs[c] = {"method": md.method}
-            if getattr(md, "failures", ()):
-                attrs[c]["not_computed"] = "; ".join(md.failures)
+        sd = warm.stable_depth
+        if sd is not None:
+            c, t = f"{w}/chatter", ("time_s",)
+            data[f"{c}/time_s"] = (np.array([s.time_s for s in warm.states]), "s", t)
+            data[f"{c}/limit_depth_m"] = Data(sd.depth_m, "m", t, "limit depth of cut at the instant's speed with the "
+                                              "tool-point FRF of that instant; NaN at rest (speed 0), where stable up "
+                                              "to the depth cap (capped 1) or not computed", fill_nan=True)
+            data[f"{c}/speed_rpm"] = Data(sd.speed_rpm, "rpm", t, "the instant's speed")
+            data[f"{c}/chatter_frequency_hz"] = Data(sd.chatter_frequency_hz, "Hz", t, "chatter frequency at the "
+                                                     "limit", fill_nan=True)
+            data[f"{c}/capped"] = Data(np.asarray(sd.capped, np.int8), "1", t, "1: stable up to the depth cap")
+            data[f"{c}/depth_cap_m"] = Data(sd.depth_cap_m, "m", t, "the largest depth searched", fill_nan=True)
+            attrs[c] = {"method": sd.method}
+            if sd.failures:
+                attrs[c]["not_computed"] = "; ".join(sd.failures)
     return write_h5(path, run, data, attrs)

@@ -9,7 +9,7 @@ the tool tip's axial drift.  A speed at which the arrangement runs away ends the
 limit of that arrangement, written into the file and the summary (not a failure of the run).  With
 ``warm_up``: the same quantities through the speed steps in time from the cold spindle, with the first
 natural frequencies of the rotor at each instant and, with a ``chatter:`` section whose FRF comes from the
-rotor, the minimum stable depth of cut (``analysis.warm_up_chatter``): ``analysis.thermal_study`` computes it all,
+rotor, the stable depth of cut at each instant's speed (``analysis.warm_up_chatter``): ``analysis.thermal_study`` computes it all,
 this run writes thermal.h5 (group /spindle_thermal) and draws the PNGs.
 """
 
@@ -61,7 +61,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     warm = res.warm_up
     if warm is not None:
         table = tabulate(warm.states, model.bearings, frequency_hz=warm.frequency_hz, in_time=True,
-                         min_depth_m=None if warm.minimum_depth is None else warm.minimum_depth.depth_m)
+                         depth_m=None if warm.stable_depth is None else warm.stable_depth.depth_m)
         paths.append(draw(outdir / "thermal_warm_up.png", warm_up_figure, table, d.title))
     if why:
         from .status import IncompleteRun
@@ -72,16 +72,17 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
 
 
 def _depth_through(loaded):
-    """``(points, instants) -> MinimumDepth`` through the warm-up when the deck's chatter section takes its FRF
-    from the rotor (a measured or modal FRF does not change with the spindle's temperatures), else None."""
+    """``(points, instants) -> StableDepth`` through the warm-up when the deck's chatter section takes its FRF from
+    the rotor (a measured or modal FRF does not change with the spindle's temperatures), else None."""
     d = loaded.deck
     if getattr(d, "chatter", None) is None:
         return None
-    from ..analysis.warm_up_chatter import minimum_depth_through
+    from ..analysis.warm_up_chatter import stable_depth_through
     from ..chatter import build_chatter
     from ..deck import deck_folder
 
     spec = build_chatter(d.chatter, deck_folder(loaded))
     if spec.frf_source != "rotor":
         return None
-    return lambda points, instants: minimum_depth_through(points, instants, spec.process, spec.speeds_rpm)
+    return lambda points, instants: stable_depth_through(points, instants, spec.process, spec.method,
+                                                         spec.method_options)

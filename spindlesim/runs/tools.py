@@ -61,9 +61,17 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     from .common import plots_wanted
 
     res = study(loaded, options, progress)
+    if res.interrupted:  # Ctrl-C in the lobes: what was computed is written, marked incomplete
+        import dataclasses
+
+        run_info = dataclasses.replace(run_info, complete=False, incomplete_reason=res.interrupted)
     paths = [write_tools(outdir / "tools.h5", run_info, res)]
     if plots_wanted(options or {}):
         paths.append(draw(outdir / "tools_frf.png", receptance_figure, res.library, loaded.deck.title))
         if res.lobes:
             paths.append(draw(outdir / "tools_lobes.png", lobes_figure, res.lobes, loaded.deck.title))
+    if res.interrupted:
+        from .status import IncompleteRun
+
+        raise IncompleteRun(f"tools: {res.interrupted}", paths, interrupted=True)
     return paths

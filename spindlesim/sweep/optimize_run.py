@@ -125,13 +125,14 @@ def _first_objective_best(res) -> int:
     return max(res.pareto, key=lambda i: g.sense * res.records[i].results[g.name])
 
 
-def written_study(folder: Path) -> tuple[list[Path], str] | None:
-    """(optimize.h5 and its figures, why it is incomplete or "") of a study written into ``folder``; None: none."""
+def written_study(folder: Path, stem: str = "optimize") -> tuple[list[Path], str] | None:
+    """(``<stem>.h5`` and its figures ``<stem>_*.png``, why it is incomplete or "") of a study written into
+    ``folder``; None: none."""
     import h5py
 
-    h5 = Path(folder) / "optimize.h5"
+    h5 = Path(folder) / f"{stem}.h5"
     if not h5.exists():
         return None
     with h5py.File(h5, "r") as f:
         reason = "" if bool(f.attrs.get("complete", True)) else str(f.attrs.get("incomplete_reason", "incomplete"))
-    return [h5, *sorted(Path(folder).glob("optimize_*.png"))], reason
+    return [h5, *sorted(Path(folder).glob(f"{stem}_*.png"))], reason

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Protocol
 
 from .conduction import SEAT_CONDUCTANCE_W_M2K
 from .motor import MotorRating
@@ -57,12 +58,40 @@ class HousingSegment:
 
 
 @dataclass(frozen=True)
+class BearingConductances:
+    """Conductances [W/K] of one bearing (all rows together): inner ring -- rolling elements, rolling elements --
+    outer ring, rolling elements -- bearing cavity (the oil-air, to the housing)."""
+
+    inner_balls_W_K: float
+    balls_outer_W_K: float
+    balls_cavity_W_K: float
+
+
+class ContactPaths(Protocol):
+    """What the spindle's network asks a bearing set about its rolling elements: the family's answer (each
+    family's set carries its own; ``spindlesim/bearings/conductance.py``).
+
+    ``elements``: the last part of the rolling elements' node name ("balls", "rollers");
+    ``elements_mass_kg(s)``: their mass in the set ``s``;
+    ``conductances(s, speed_rad_s, inner_N, outer_N, film_inner_m, film_outer_m, cavity_C)``: the set's
+    :class:`BearingConductances` at a speed, with the contact loads per rolling element at the inner and the
+    outer race [N] (arrays), the lubricant films [m] and the temperature of the cavity's air [C]."""
+
+    elements: str
+
+    def elements_mass_kg(self, s: "BearingSet") -> float: ...
+
+    def conductances(self, s: "BearingSet", speed_rad_s: float, inner_N, outer_N, film_inner_m, film_outer_m,
+                     cavity_C: float) -> BearingConductances: ...
+
+
+@dataclass(frozen=True)
 class BearingSet:
     """A bearing set (all its rows) centred at ``position_m``: three nodes, inner ring, rolling elements,
-    outer ring.  ``element``: "ball" (Hertz point contacts; ``balls`` balls of ``ball_diameter_m``) or
-    "roller" (line contacts of ``roller_length_m``; ``balls`` rollers of mean diameter ``ball_diameter_m``,
-    ``contact_angle_rad`` a tapered roller bearing's cup angle, 0 for a cylindrical one).  Masses default to
-    estimates from the geometry (ring shoulders at d_m -+ 0.35 D)."""
+    outer ring.  ``balls`` rolling elements (all rows) of (mean) diameter ``ball_diameter_m`` on the pitch
+    diameter at ``contact_angle_rad`` (a tapered roller bearing's cup angle, 0 for a cylindrical one).  What
+    the contacts conduct is the family's: ``paths`` (:class:`ContactPaths`; a family's ``thermal_set`` gives
+    it).  Masses default to estimates from the geometry (ring shoulders at d_m -+ 0.35 D)."""
 
     name: str
     position_m: float
@@ -86,19 +115,19 @@ class BearingSet:
     outer_ring_mass_kg: float | None = None
     inner_seat_W_m2K: float = SEAT_CONDUCTANCE_W_M2K
     outer_seat_W_m2K: float = SEAT_CONDUCTANCE_W_M2K
-    element: str = "ball"
-    roller_length_m: float = 0.0
+    paths: ContactPaths | None = None
 
-    def __post_init__(self) -> None:
-        if self.element not in ("ball", "roller"):
-            raise ValueError(f"bearing set {self.name!r}: element must be 'ball' or 'roller', not {self.element!r}")
-        if self.element == "roller" and self.roller_length_m <= 0.0:
-            raise ValueError(f"bearing set {self.name!r}: a roller set needs its roller length")
+    @property
+    def contact_paths(self) -> ContactPaths:
+        """``paths``, which the network needs (a ValueError names the set without them)."""
+        if self.paths is None:
+            raise ValueError(f"bearing set {self.name!r} has no contact paths (its family's thermal_set gives them)")
+        return self.paths
 
     @property
     def elements_node(self) -> str:
         """The name of its rolling elements' node: ``bearing:<name>:balls`` or ``bearing:<name>:rollers``."""
-        return f"bearing:{self.name}:{'balls' if self.element == 'ball' else 'rollers'}"
+        return f"bearing:{self.name}:{self.contact_paths.elements}"
 
     @property
     def inner_shoulder_m(self) -> float:
@@ -120,10 +149,7 @@ class BearingSet:
 
     def balls_mass_kg(self) -> float:
         """Mass of the rolling elements (balls or rollers) [kg]."""
-        if self.element == "roller":
-            volume = 0.25 * math.pi * self.ball_diameter_m ** 2 * self.roller_length_m
-            return self.balls * self.ball.density_kg_m3 * volume
-        return self.balls * self.ball.density_kg_m3 * math.pi * self.ball_diameter_m ** 3 / 6.0
+        return self.contact_paths.elements_mass_kg(self)
 
 
 @dataclass(frozen=True)

@@ -140,6 +140,15 @@ class _Table:
 _LOOKUP = {name: _Table(table, name) for name, table in TABLES.items()}
 
 
+#: the air temperatures [C] the spindle's network evaluates its film properties within (clipped to them)
+AIR_FILM_RANGE_C = (-20.0, 200.0)
+
+
+def clip_air_C(t_C: float) -> float:
+    """``t_C`` clipped to :data:`AIR_FILM_RANGE_C`: where the spindle network's air films take their properties."""
+    return min(max(t_C, AIR_FILM_RANGE_C[0]), AIR_FILM_RANGE_C[1])
+
+
 def air(t_C: float) -> FluidProperties:
     """Dry air at 1 atm, -20..200 degC."""
     return _LOOKUP["air"](t_C)

@@ -3,7 +3,7 @@
 The shaft, the bearings and the tool come from the rotor part of the deck; this section adds what the
 rotor does not say: the housing around the shaft, the cooling jacket, the built-in motor, the lubrication
 and the ambient; and when the analyses take the thermal state.  Every key carries its unit; the SI layout
-is built in ``spindlesim.analysis.spindle_thermal`` (it needs the rotor)::
+is built in ``spindlesim.model.thermal`` (it needs the rotor; each bearing family builds its own set)::
 
     spindle_thermal:
       ambient_C: 20
@@ -34,21 +34,6 @@ from ..fields import DeckModel, PositiveFloat
 Expansion = Annotated[float, Field(ge=0.0, le=1e-3)]
 
 
-def network_bearings(bearings) -> tuple[list, list]:
-    """The rotor's bearing entries in the spindle's thermal network and those that cannot be:
-    ([(index, entry)], [(index, entry, why)]).  In it: ball sets, DTRBs and cylindrical roller bearings on
-    rigid races; a fluid film keeps its own heat balance, a linear bearing has none."""
-    sets, refused = [], []
-    for i, b in enumerate(bearings):
-        if b.type in ("ball", "dtrb"):
-            sets.append((i, b))
-        elif b.type == "roller":
-            if b.model != "rigid_race" or b.element != "roller":
-                refused.append((i, b, "the spindle's thermal network takes a roller entry with model: rigid_race "
-                                      "and element: roller (Palmgren's cylindrical roller bearing)"))
-            else:
-                sets.append((i, b))
-    return sets, refused
 HousingRow = Annotated[list[Annotated[float, Field(gt=0.0, le=1e5)]], Field(min_length=3, max_length=3)]
 
 

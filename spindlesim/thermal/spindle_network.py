@@ -9,9 +9,11 @@ Nodes (names are stable; the coupling code refers to them):
   horizontal cylinder (Churchill-Chu, at the current temperatures) and radiation;
 - ``bearing:<name>:inner|balls|outer`` (``rollers`` for a roller bearing): inner ring -- the shaft segments its
   width overlaps, by share (seat contact in series with half the ring's radial conduction; a bearing on a node
-  straddles the elements on both sides), inner ring -- balls and balls -- outer ring through the Hertz contacts
-  and the EHL film, balls -- housing (the segments around the seat, by share) through the oil-air of the bearing
-  cavity (Whitaker), outer ring -- housing segment (seat contact, half ring, half housing wall);
+  straddles the elements on both sides), inner ring -- balls and balls -- outer ring through the contacts and
+  balls -- housing (the segments around the seat, by share) through the oil-air of the bearing cavity: the
+  values the set's family gives (its ``contact_paths``: Hertz ellipses or lines, the EHL film, Whitaker;
+  ``spindlesim/bearings/conductance.py``), outer ring -- housing segment (seat contact, half ring, half housing
+  wall);
 - ``jacket:coolant[k]``: coolant segments in flow order, fed by the boundary ``jacket:inlet``
   (advection m_dot c_p), each exchanging with the housing segment at its axial position (h from
   Gnielinski or Dittus-Boelter on the channel wall, wetted area per segment);
@@ -37,13 +39,11 @@ from typing import Mapping
 import numpy as np
 
 from . import convection as cv
-from .bearing_conductance import (ball_bearing_conductances, contact_ellipse_unit, line_contact_half_width, race_radii,
-                                  roller_bearing_conductances)
 from .conduction import axial_conductance, conductance_in_series, cylindrical_shell_conductance
 from .layout import SpindleLayout
 from .motor import MotorLosses, motor_losses, windage_loss_W
 from .network import Advection, Conductance, Network, Node, SteadyState
-from .properties import air, fluid
+from .properties import clip_air_C, fluid
 from .transient import StepProfile, TransientResult, solve_transient
 
 
@@ -108,7 +108,6 @@ class SpindleNetwork:
     layout: SpindleLayout
     network: Network
     _rules: tuple = field(repr=False, compare=False)
-    _hertz: dict = field(repr=False, compare=False)
     #: each bearing's seats: ([(shaft segment, share of the width)], [(housing segment, share)])
     seats: dict = field(default_factory=dict, repr=False, compare=False)
 
@@ -144,27 +143,13 @@ class SpindleNetwork:
         return out
 
     def _bearing(self, b, speed, c: BearingContacts | None, T):
+        """The set's conductances: its family's answer (``b.contact_paths``) at the contact loads and films ``c``
+        (None: the nominal load, no film) and the temperature of its rolling elements' air."""
         qi = np.asarray(b.nominal_contact_load_N if c is None else c.inner_N, dtype=float)
         qo = np.asarray(b.nominal_contact_load_N if c is None else c.outer_N, dtype=float)
         t_air = self._inner_air_C() if T is None else float(T[self.network.index(b.elements_node)])
-        medium = air(_clip_air(t_air))
-        films = dict(film_inner_m=0.0 if c is None else c.film_inner_m, film_outer_m=0.0 if c is None else c.film_outer_m)
-        if b.element == "roller":
-            rxi, rxo, e_prime = self._hertz[b.name]
-            return roller_bearing_conductances(
-                speed_rad_s=speed, rollers=b.balls, roller_diameter_m=b.ball_diameter_m,
-                roller_length_m=b.roller_length_m, pitch_diameter_m=b.pitch_diameter_m,
-                contact_angle_rad=b.contact_angle_rad,
-                inner_half_width_m=line_contact_half_width(qi, rxi, b.roller_length_m, e_prime),
-                outer_half_width_m=line_contact_half_width(qo, rxo, b.roller_length_m, e_prime),
-                k_roller_W_mK=b.ball.conductivity_W_mK, k_ring_W_mK=b.ring.conductivity_W_mK,
-                medium_h=lambda d, w: cv.rotating_shaft_h(d, w, _clip_air(t_air + 10.0), _clip_air(t_air)), **films)
-        a1i, b1i, a1o, b1o = self._hertz[b.name]
-        qi, qo = np.maximum(qi, 0.0) ** (1.0 / 3.0), np.maximum(qo, 0.0) ** (1.0 / 3.0)
-        return ball_bearing_conductances(
-            speed_rad_s=speed, balls=b.balls, ball_diameter_m=b.ball_diameter_m, pitch_diameter_m=b.pitch_diameter_m,
-            contact_angle_rad=b.contact_angle_rad, inner_axes_m=(a1i * qi, b1i * qi), outer_axes_m=(a1o * qo, b1o * qo),
-            k_ball_W_mK=b.ball.conductivity_W_mK, k_ring_W_mK=b.ring.conductivity_W_mK, medium=medium, **films)
+        return b.contact_paths.conductances(b, speed, qi, qo, 0.0 if c is None else c.film_inner_m,
+                                            0.0 if c is None else c.film_outer_m, t_air)
 
     def _ring_faces(self, b, speed: float) -> tuple[float, float]:
         """Convection [W/K] of the rings' free surfaces (side faces and shoulder lands, all rows) to the oil-air
@@ -295,14 +280,10 @@ def _suffix(b) -> str:
     return b.elements_node.rsplit(":", 1)[1]
 
 
-def _clip_air(t: float) -> float:
-    return min(max(t, -20.0), 200.0)
-
-
 def _film(T, idx, a: str, b: str, default: float) -> float:
     if T is None:
         return default
-    return _clip_air(0.5 * (T[idx(a)] + T[idx(b)]))
+    return clip_air_C(0.5 * (T[idx(a)] + T[idx(b)]))
 
 
 def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
@@ -350,14 +331,14 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
         def f_out(w, T, idx, j=j, d=h.outer_diameter_m, wall=wall, area_o=area_o):
             ts = lay.ambient_C + 10.0 if T is None else T[idx(f"housing[{j}]")]
             ts = ts if abs(ts - lay.ambient_C) > 0.1 else lay.ambient_C + 0.1
-            h_c = cv.free_cylinder_h(d, _clip_air(ts), lay.ambient_C)
+            h_c = cv.free_cylinder_h(d, clip_air_C(ts), lay.ambient_C)
             if lay.housing_emissivity > 0.0:
                 h_c += cv.radiation_h(ts, lay.ambient_C, lay.housing_emissivity)
             return conductance_in_series(wall, h_c * area_o)
         rules.append((name, "fn", {"fn": f_out}))
 
     covered = np.zeros(len(lay.shaft))   # shaft length under bearings / rotor per segment
-    hertz, shares = {}, {}
+    shares = {}
     for b in lay.bearings:
         pre = f"bearing:{b.name}"
         el = _suffix(b)
@@ -387,13 +368,6 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
         add(f"{pre}:inner", b.elements_node, 0.0, f"{pre}:inner--{el}")
         add(b.elements_node, f"{pre}:outer", 0.0, f"{pre}:{el}--outer")
         rules.append((f"{pre}", "bearing", {}))
-        e_prime = 2.0 / ((1.0 - b.ring_poisson ** 2) / b.ring_E_Pa + (1.0 - b.ball_poisson ** 2) / b.ball_E_Pa)
-        args = (b.ball_diameter_m, b.pitch_diameter_m, b.contact_angle_rad)
-        r_i, r_o = race_radii(*args, b.inner_conformity, "inner"), race_radii(*args, b.outer_conformity, "outer")
-        if b.element == "roller":  # rolling radii R_x and E' of the line contacts
-            hertz[b.name] = (r_i[0], r_o[0], e_prime)
-        else:
-            hertz[b.name] = contact_ellipse_unit(*r_i, e_prime) + contact_ellipse_unit(*r_o, e_prime)
 
     if lay.motor is not None:
         _motor(lay, nodes, add, rules, s_edges, h_edges, h_half, covered, air_ref)
@@ -401,10 +375,10 @@ def build_spindle_network(layout: SpindleLayout) -> SpindleNetwork:
         _jacket(lay, nodes, add, advs, rules, h_edges)
     _shaft_surfaces(lay, add, rules, s_edges, h_edges, covered, air_ref)
     net = Network(tuple(nodes), tuple(conds), tuple(advs))
-    sn = SpindleNetwork(lay, net, tuple(rules), hertz, shares)
+    sn = SpindleNetwork(lay, net, tuple(rules), shares)
     nominal = sn.conductances(0.0)   # the network alone holds the values at rest, nominal temperatures
     conds = [Conductance(c.a, c.b, nominal.get(c.name, c.value_W_K), c.name) for c in conds]
-    return SpindleNetwork(lay, Network(tuple(nodes), tuple(conds), tuple(advs)), tuple(rules), hertz, shares)
+    return SpindleNetwork(lay, Network(tuple(nodes), tuple(conds), tuple(advs)), tuple(rules), shares)
 
 
 def _motor(lay, nodes, add, rules, s_edges, h_edges, h_half, covered, air_ref):
@@ -498,6 +472,6 @@ def _shaft_surfaces(lay, add, rules, s_edges, h_edges, covered, air_ref):
             def f_amb(w, T, idx, i=i, d=d, area=area):
                 ts = lay.ambient_C + 10.0 if T is None else float(T[idx(f"shaft[{i}]")])
                 ts = ts if abs(ts - lay.ambient_C) > 0.1 else lay.ambient_C + 0.1
-                return cv.rotating_shaft_h(d, w, _clip_air(ts), lay.ambient_C) * area
+                return cv.rotating_shaft_h(d, w, clip_air_C(ts), lay.ambient_C) * area
             rules.append((name, "fn", {"fn": f_amb}))
 

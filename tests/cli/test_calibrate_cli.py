@@ -119,3 +119,25 @@ def test_ctrl_c_keeps_the_best_values_evaluated(tmp_path, monkeypatch):
         assert not f.attrs["complete"]
         assert np.all(np.isnan(f["calibration/lower_95"][:]))
     assert "INCOMPLETE" in (out / "calibrated.yaml").read_text()
+
+
+def test_the_run_report_shows_the_calibration_written_beside_it(tmp_path):
+    """Issue 33, item 4: `spindlesim calibrate -o OUT`, then `spindlesim run -o OUT` on the same deck: report.html
+    has the calibration's summary and figure; `run` does not fit again (calibration.h5 untouched)."""
+    import yaml
+
+    data = yaml.safe_load(_deck(tmp_path).read_text())
+    for key in ("modal", "campbell", "frf", "unbalance", "chatter", "spindle_thermal", "tools"):
+        data.pop(key, None)
+    deck = tmp_path / "small.yaml"
+    deck.write_text(yaml.safe_dump(data, sort_keys=False))
+    res, out = _run(tmp_path, deck, "-q")
+    assert res.exit_code == 0, res.output
+    stamp = (out / "calibration.h5").stat().st_mtime_ns
+    res = CliRunner().invoke(main, ["run", str(deck), "-o", str(out), "-q"])
+    assert res.exit_code == 0, res.output
+    page = (out / "report.html").read_text()
+    for text in ("tool.joint.translational_N_m", "rms error", "calibration_frf.png",
+                 "Calibration: measured FRFs"):
+        assert text in page, text
+    assert (out / "calibration.h5").stat().st_mtime_ns == stamp

@@ -75,11 +75,13 @@ def test_thermal_runs_to_the_end_on_an_edited_milling_deck(tmp_path, name):
     res = CliRunner().invoke(main, ["thermal", str(deck), "-o", str(out)])
     assert res.exit_code == 0, res.output
     assert "SVD did not converge" not in res.output
-    assert "minimum stable depth of cut" in res.output
+    assert "stable depth of cut at the running speed" in res.output
     with h5py.File(out / "thermal.h5") as f:
         assert bool(f.attrs["complete"])
-        depth = f["spindle_thermal/warm_up/chatter/min_limit_depth_m"][:]
-        assert np.all(np.isfinite(depth)) and np.all(depth > 0)
+        c = f["spindle_thermal/warm_up/chatter"]
+        depth, rpm = c["limit_depth_m"][:], c["speed_rpm"][:]
+        cutting = (rpm > 0) & (c["capped"][:] == 0)
+        assert cutting.sum() >= 10 and np.all(np.isfinite(depth[cutting])) and np.all(depth[cutting] > 0)
         assert "speed_limit_rpm" in f["spindle_thermal"].attrs or name != "preload_30um"
     assert (out / "thermal_warm_up.png").exists()
 
@@ -90,7 +92,7 @@ def test_a_failed_part_is_written_as_missing_and_the_rest_kept(tmp_path, monkeyp
     what failed and where in one line."""
     import spindlesim.analysis.warm_up_chatter as wuc
 
-    real, calls = wuc.zero_order_lobes, []
+    real, calls = wuc.stability_lobes, []
 
     def flaky(*a, **k):
         calls.append(1)
@@ -98,7 +100,7 @@ def test_a_failed_part_is_written_as_missing_and_the_rest_kept(tmp_path, monkeyp
             raise np.linalg.LinAlgError("SVD did not converge")
         return real(*a, **k)
 
-    monkeypatch.setattr(wuc, "zero_order_lobes", flaky)
+    monkeypatch.setattr(wuc, "stability_lobes", flaky)
     text = DECK.read_text().replace("speeds_rpm: [4000, 8000, 12000, 16000, 20000, 24000]", "speeds_rpm: [12000]")
     text = text.replace("warm_up: {steps: [[0, 4000], [30, 8000], [60, 12000], [90, 0]], duration_min: 120, "
                         "samples: 25}", "warm_up: {steps: [[0, 4000], [30, 8000]], duration_min: 60, samples: 4}")
@@ -111,8 +113,8 @@ def test_a_failed_part_is_written_as_missing_and_the_rest_kept(tmp_path, monkeyp
     assert "SVD did not converge" in res.output and "min (" in res.output
     with h5py.File(out / "thermal.h5") as f:
         assert not f.attrs["complete"]
-        assert "minimum stable depth" in f.attrs["incomplete_reason"]
-        depth = f["spindle_thermal/warm_up/chatter/min_limit_depth_m"][:]
+        assert "stable depth of cut" in f.attrs["incomplete_reason"]
+        depth = f["spindle_thermal/warm_up/chatter/limit_depth_m"][:]
         assert np.isnan(depth).sum() >= 1 and np.isfinite(depth).sum() >= 1
         assert "SVD did not converge" in f["spindle_thermal/warm_up/chatter"].attrs["not_computed"]
         assert len(f["spindle_thermal/speed_rpm"][:]) == 1

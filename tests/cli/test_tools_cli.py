@@ -103,6 +103,13 @@ BAD = [
     ("  - name: em16_shrink_90 ", "  - name: em16_shrink_60 ", "tools[1].name", "duplicate tool name"),
     ("  - name: em8_shrink_32\n", "  - name: a/b\n", "tools[2].name", "no '/'"),
     ("        - [8.0, 0.0, 12.0,", "        - [8.0, 9.0, 12.0,", "tools[2].tool.elements[0][1]", "inner_dia_mm"),
+    # issue 33, item 4: a 12 mm shank into the 8 mm bore of its shrink-fit chuck does not go in
+    ("        - [8.0, 0.0, 12.0,", "        - [12.0, 0.0, 12.0,", "tools[2].tool.elements[0][0]",
+     "larger than the holder's bore (inner_dia_mm 8"),
+    # ... nor the 16 mm end mill of the tool: section into a holder bored for 12 mm
+    ("  - name: em16_shrink_90             # the same end mill 90 mm out of the same chuck\n",
+     "  - name: em16_shrink_90\n    holder:\n      elements:\n        - [63.0, 12.0, 20.0, 7850.0, 210.0, 80.8, 0.3, 0.0]\n",
+     "tools[1].tool.elements[0][0]", "bore (inner_dia_mm 12 of the holder's last row): it does not go in"),
 ]
 
 
@@ -137,3 +144,29 @@ def test_a_load_on_the_decks_tool_is_refused_for_the_library(tmp_path):
     res, _ = _run([deck, "--no-lobes"], tmp_path)
     assert res.exit_code == 2, res.output
     assert "loads[0].node" in res.output and "sits on the deck's holder or tool" in res.output
+
+
+def test_ctrl_c_in_the_lobes_keeps_the_receptances_and_the_tools_done(tmp_path, monkeypatch):
+    """Issue 33, item 4: a Ctrl-C in the second tool's lobes: exit 130, tools.h5 marked incomplete with every
+    tool's receptance and the first tool's lobes, the summary says so."""
+    import spindlesim.analysis.tool_library as lib
+
+    real, calls = lib.tool_lobes, []
+
+    def second_stops(*a, **k):
+        calls.append(1)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(*a, **k)
+
+    monkeypatch.setattr(lib, "tool_lobes", second_stops)
+    res, out = _run([_small_library(tmp_path, CHEAP_CHATTER)], tmp_path)
+    assert res.exit_code == 130, res.output
+    assert "interrupted by the user in the lobes of tool 'em8_shrink_32'" in res.output
+    with h5py.File(out / "tools.h5") as f:
+        assert not f.attrs["complete"]
+        assert "lobes of 1 of 3 tools" in f.attrs["incomplete_reason"]
+        assert [str(n) for n in f["tools/lobes/tool"][:].astype(str)] == ["em16_shrink_60"]
+        for name in ("em16_shrink_60", "em8_shrink_32", "em20_er32_70"):
+            assert np.isfinite(f[f"tools/{name}/receptance_m_N"][:]).all()
+    assert "min depth" in res.output and (out / "tools_lobes.png").exists()

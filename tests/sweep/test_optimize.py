@@ -208,6 +208,24 @@ def test_the_span_example_from_the_command_line(tmp_path):
     assert best.deck.shaft.elements[7][2] == pytest.approx(52.7288, rel=1e-4)
 
 
+def test_a_study_whose_every_design_is_infeasible_says_which_constraint_to_relax(tmp_path):
+    """Issue 33, item 4: a rotor mass of 1 g cannot be met by any span; the summary says no design is feasible and,
+    for each constraint, the range its result took and how many designs met it (the frequency bound is met by all:
+    the mass is the one to relax)."""
+    deck = _deck(tmp_path, ("  budget: 60", "  constraints:\n    - {name: rotor_mass_kg, max: 0.001}\n"
+                                           "    - {name: first_natural_frequency_hz, min: 100}\n  budget: 60"))
+    res, out = _cli(tmp_path, deck)
+    assert res.exit_code == 0, res.output
+    assert "no feasible design found; the constraints over the designs evaluated:" in res.output
+    lines = res.output.splitlines()
+    mass = next(ln for ln in lines if ln.strip().startswith("rotor_mass_kg <= 0.001:"))
+    n = int(mass.rsplit(" of ", 1)[1])
+    assert "; met by 0 of" in mass and " kg;" in mass
+    freq = next(ln for ln in lines if ln.strip().startswith("100 <= first_natural_frequency_hz:"))
+    assert f"; met by {n} of {n}" in freq
+    assert (out / "optimize.h5").exists() and not (out / "optimized.yaml").exists()
+
+
 def test_a_pareto_study_on_two_workers_writes_one_deck_per_point(tmp_path):
     deck = _deck(tmp_path, (PARETO[0], PARETO[1].replace("budget: 120", "budget: 24")))
     res, out = _cli(tmp_path, deck, "--workers", "2")

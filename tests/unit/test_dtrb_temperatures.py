@@ -1,6 +1,6 @@
 """A DTRB at prescribed temperatures (issue 22, item 3: "likewise the axial preload of a DTRB"): the deck key
 `temperatures_C` of the `dtrb:` section and of a rotor's `type: dtrb` entry gives the bearing the preload
-delta0 its growth gives (thermal/growth_bearings.dtrb_preload_change, checked there).
+delta0 its growth gives (bearings/dtrb/thermal.dtrb_preload_change, checked there).
 
 * A uniform temperature changes nothing (every part grows about the same centre by the same strain).
 * Cones 10 K warmer than the cup (rollers between) press into the rollers: delta0 rises by the growth
@@ -15,10 +15,11 @@ import pytest
 
 from spindlesim.bearings.dtrb.bearing import DtrbBearing
 from spindlesim.bearings.dtrb.section import DtrbMaterial, at_deck_temperatures, geometry_from, material_body
+from spindlesim.bearings.dtrb.thermal import dtrb_preload_change
 from spindlesim.bearings.temperatures import PartTemperatures as DtrbTemperatures
 from spindlesim.deck import default_deck
 from spindlesim.thermal.growth import BEARING_STEEL
-from spindlesim.thermal.growth_bearings import BearingTemperatures, dtrb_preload_change
+from spindlesim.thermal.growth_bearings import BearingTemperatures
 
 LOAD = np.array([5000.0, 0.0, 5000.0, 0.0, 0.0])
 

@@ -11,9 +11,10 @@ import yaml
 from click.testing import CliRunner
 
 from spindlesim.bearings.ball import BallSection, build, default_deck_text
+from spindlesim.bearings.ball.growth import ball_bearing_growth
 from spindlesim.bearings.ball.section import thermal_inputs
 from spindlesim.cli import main
-from spindlesim.thermal.growth_bearings import BearingTemperatures, ball_bearing_growth
+from spindlesim.thermal.growth_bearings import BearingTemperatures
 
 from .test_ball_section import entry
 

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from spindlesim.thermal.examples import milling_spindle_layout
+from spindlesim.model.thermal_example import milling_spindle_layout
 from spindlesim.thermal.network import Advection, Conductance, Network, Node, ThermalConvergenceError
 from spindlesim.thermal.spindle_network import BearingContacts, BearingHeat, build_spindle_network
 from spindlesim.thermal.transient import StepProfile, solve_transient

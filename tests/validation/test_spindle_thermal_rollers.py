@@ -30,7 +30,7 @@ from spindlesim.bearings.dtrb.section import geometry_from
 from spindlesim.bearings.roller.bearing import RigidRaceBearing
 from spindlesim.bearings.roller.kinematics import CageKinematics
 from spindlesim.deck import default_deck, load_deck
-from spindlesim.thermal.bearing_conductance import ellipse_constriction_resistance, line_contact_half_width
+from spindlesim.bearings.conductance import ellipse_constriction_resistance, line_contact_half_width
 from spindlesim.thermal.friction import Lubricant
 
 ROOT = Path(__file__).parents[2]

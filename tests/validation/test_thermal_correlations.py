@@ -8,9 +8,9 @@ import math
 import numpy as np
 import pytest
 
+from spindlesim.bearings.conductance import (ball_bearing_conductances, contact_ellipse_unit,
+                                             ellipse_constriction_resistance, race_radii)
 from spindlesim.thermal import convection as cv
-from spindlesim.thermal.bearing_conductance import (ball_bearing_conductances, contact_ellipse_unit,
-                                                    ellipse_constriction_resistance, race_radii)
 from spindlesim.thermal.conduction import contact_conductance_cmy, cylindrical_shell_conductance
 from spindlesim.thermal.motor import MotorRating, motor_losses, windage_torque_coefficient
 from spindlesim.thermal.properties import air, fluid, water

@@ -1,4 +1,4 @@
-"""Bearing heat (spindlesim.thermal.friction, friction_ball) against hand calculations and NASA measurements.
+"""Bearing heat (spindlesim.thermal.friction, spindlesim.bearings.ball.heat) against hand calculations and NASA measurements.
 
 - Palmgren (1959) via Harris and Kotzalas (2007, Essential Concepts): M = f1 P1 d_m + 1e-7 f0 (nu n)^(2/3) d_m^3
   (N mm, mm^2/s, rpm, mm), f1 = z (P0/C0)^y, every number computed here from the tabulated coefficients.
@@ -23,9 +23,9 @@ from spindlesim.bearings.ball.geometry import Material, ball_geometry
 from spindlesim.thermal.friction import (Lubricant, ball_palmgren, ball_set_palmgren, f0_coefficient,
                                          kinematic_viscosity_m2_s, roller_palmgren, row_loads_N,
                                          static_equivalent_load_N, viscous_moment_Nm)
-from spindlesim.thermal.friction_ball import (ContactFrictionOptions, ball_bearing_heat, ball_kinematics,
-                                              ehl_rolling_force_N, inlet_shear_heating_factor,
-                                              skf_sliding_coefficient, sphere_drag_coefficient)
+from spindlesim.bearings.ball.heat import (ContactFrictionOptions, ball_bearing_heat, ball_kinematics,
+                                           ehl_rolling_force_N, inlet_shear_heating_factor, skf_sliding_coefficient,
+                                           sphere_drag_coefficient)
 
 from ..unit.test_ball_section import bearing
 

@@ -1,4 +1,4 @@
-"""Thermal, fit and centrifugal growth (spindlesim.thermal.growth, growth_bearings) against hand calculations.
+"""Thermal, fit and centrifugal growth (spindlesim.thermal.growth, growth_bearings; the families' bearings/*/growth, thermal) against hand calculations.
 
 - Free rings: the textbook change of a radial bearing's diametral clearance, d_o e_o - d_i e_i - 2 D e_b
   (Harris and Kotzalas 2007, Essential Concepts, "Interference fitting and clearance"), and the exact
@@ -18,14 +18,14 @@ import pytest
 
 from spindlesim.bearings.ball.bearing import BallBearing, Preload
 from spindlesim.bearings.ball.geometry import ball_geometry
-from spindlesim.bearings.ball.growth import SpeedGrowth, at_temperature
+from spindlesim.bearings.ball.growth import SpeedGrowth, at_temperature, axial_equivalent_of_radial, ball_bearing_growth
+from spindlesim.bearings.dtrb.thermal import dtrb_preload_change
+from spindlesim.bearings.roller.thermal import roller_operating_clearance
 from spindlesim.contact.hertz import point_contact_constant
 from spindlesim.thermal.growth import (BEARING_STEEL, SI3N4, ThermoElastic, fit_pressure, free_growth,
                                        inner_fit_loss_speed_rad_s, inner_ring_fit, outer_ring_fit,
                                        rotating_disc_radial_displacement, shaft_housing_axial_growth, thermal_strain)
-from spindlesim.thermal.growth_bearings import (BearingTemperatures, Mounting, axial_equivalent_of_radial,
-                                                ball_bearing_growth, dtrb_preload_change,
-                                                roller_operating_clearance)
+from spindlesim.thermal.growth_bearings import BearingTemperatures, Mounting
 
 from ..unit.test_ball_section import bearing
 

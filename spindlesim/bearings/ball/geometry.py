@@ -42,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...contact.hertz import combined_modulus, point_contact, series_stiffness
+from ..rolling import pitch_ratio
 
 ARRANGEMENTS = ("single", "DB", "DF", "DT")
 
@@ -103,7 +104,7 @@ class BallGeometry:
     @property
     def gamma(self) -> float:
         """D cos(alpha_f) / d_m."""
-        return self.ball_diameter_m * math.cos(self.mounted_angle_rad) / self.pitch_diameter_m
+        return pitch_ratio(self.ball_diameter_m, self.mounted_angle_rad, self.pitch_diameter_m)
 
     @property
     def inner_groove_radius_m(self) -> float:
@@ -194,7 +195,7 @@ def ball_geometry(*, balls: int, ball_diameter_m: float, pitch_diameter_m: float
         alpha_f = math.atan2(a_ax, a_rad)
     z, s = row_layout(arrangement, rows, row_spacing_m, direction)
     e_star = combined_modulus(ball.E_Pa, ball.poisson, ring.E_Pa, ring.poisson)
-    g = D * math.cos(alpha_f) / dm
+    g = pitch_ratio(D, alpha_f, dm)
     inner = _hertz_unit((2.0 / D) / (1.0 - g), (2.0 - 1.0 / inner_conformity) / D, e_star)
     outer = _hertz_unit((2.0 / D) / (1.0 + g), (2.0 - 1.0 / outer_conformity) / D, e_star)
     mass = ball.density_kg_m3 * math.pi * D ** 3 / 6.0

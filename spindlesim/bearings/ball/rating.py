@@ -44,6 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..rolling import pitch_ratio
 from .geometry import BallGeometry
 
 log = logging.getLogger(__name__)
@@ -178,7 +179,7 @@ def equivalent_load_N(g: BallGeometry, Fr: float, Fa: float) -> float | None:
 
 def contact_ratings_N(g: BallGeometry, C_row: float) -> tuple[float, float]:
     """(Q_ci, Q_ce) of ISO/TS 16281 for one row of rating C_row."""
-    gam = g.ball_diameter_m * math.cos(g.contact_angle_rad) / g.pitch_diameter_m
+    gam = pitch_ratio(g.ball_diameter_m, g.contact_angle_rad, g.pitch_diameter_m)
     fi, fo = g.inner_conformity, g.outer_conformity
     ratio = 1.044 * ((1.0 - gam) / (1.0 + gam)) ** 1.72 * (fi * (2.0 * fo - 1.0) / (fo * (2.0 * fi - 1.0))) ** 0.41
     base = C_row / (g.balls * math.cos(g.contact_angle_rad))

@@ -66,7 +66,7 @@ from pydantic import Field, model_validator
 from ...fields import DeckModel, Load5, NodeNumber, NonNegFloat, PositiveFloat, Range
 from ..damping import RollingDamping
 from .section_thermal import (BallFits, BallMaterial, BallMounting, BallTemperatures, growth_checks,  # noqa: F401
-                              thermal_inputs)
+                              growth_plausibility, plausibility, thermal_inputs, thermal_set)
 
 LoadComponent = Literal["fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm"]
 LOAD_COMPONENTS = ("fx_N", "fy_N", "fz_N", "mx_Nm", "my_Nm")
@@ -496,3 +496,10 @@ def _made_as(entry: _BallKeys, geometry, preload):
 
     bm = entry.material if entry.ball_material is None else entry.ball_material
     return MadeAs(geometry, preload, thermo(entry.material), thermo(bm))
+
+
+# ---- what the family answers for itself (its row of BEARING_TYPES, bearings/types.py; the plausibility and the
+# thermal set with the keys of the growth: section_thermal.py) ----------------------------------------------------
+def holds_axially(entry: BallBearingEntry) -> bool:
+    """A ball bearing (set) carries axial load (its contact angle; a deep-groove bearing's under load)."""
+    return True

@@ -1,5 +1,6 @@
 """Deck keys of a ball bearing at temperature (``temperatures_C``, ``fits_um``, ``mounting``) and the
-materials, with their checks and their conversion to SI for :func:`~.growth.at_temperature`.
+materials, with their checks and their conversion to SI for :func:`~.growth.at_temperature`; the entry's
+plausibility (likely unit mistakes) and its set in the spindle's thermal network (its row of ``BEARING_TYPES``).
 
 Only pydantic is imported at module level (docs/theory.md, "Spindle thermal model: heat generation and
 growth", "Deck contract (ball bearings)").
@@ -13,6 +14,7 @@ from typing import Annotated, Optional
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, NonNegFloat, PositiveFloat
+from ..plausible import Found, fits_and_expansions, metres, rolling_damping
 
 #: coefficient of thermal expansion [1/K]: bearing steel (100Cr6 / AISI 52100, 11-12.5e-6) and
 #: silicon nitride (about 3.2e-6); the default of a ball material below 5000 kg/m3 is the ceramic's
@@ -185,6 +187,14 @@ def growth_checks(entry) -> list[tuple[tuple, str]]:
     return bad
 
 
+def growth_plausibility(entry, at: tuple) -> Found:
+    """Likely unit mistakes among the keys of the growth (``fits_um``, the materials' expansion coefficients) of a
+    ball entry or the ``bearing:`` section at the key path ``at`` (``spindlesim/bearings/plausible.py``)."""
+    bad: Found = []
+    fits_and_expansions(entry, at, bad)
+    return bad
+
+
 def thermal_inputs(entry):
     """(temperatures, ring, ball, mounting) in SI for :func:`~.growth.at_temperature`, or None when the
     entry has none of temperatures_C, fits_um, mounting (the bearing as made, at the reference state)."""
@@ -215,3 +225,19 @@ def thermal_inputs(entry):
             shaft=thermo(m.shaft_material, m.shaft_material.thermal_expansion_1_K),
             housing=thermo(m.housing_material, m.housing_material.thermal_expansion_1_K))
     return temps, ring, ball, mounting
+
+
+def plausibility(entry, at: tuple) -> Found:
+    """Likely unit mistakes of a ball entry at the key path ``at``: its damping, its diameters (metres?), its fits
+    and expansion coefficients."""
+    bad: Found = []
+    rolling_damping(entry, at, bad)
+    metres(entry, at, ("pitch_diameter_mm", "ball_diameter_mm"), bad)
+    return bad + growth_plausibility(entry, at)
+
+
+def thermal_set(entry, z_m: float):
+    """Its set in the spindle's thermal network (:func:`.thermal.thermal_set`)."""
+    from .thermal import thermal_set as of_entry
+
+    return of_entry(entry, z_m)

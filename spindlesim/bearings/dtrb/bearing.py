@@ -76,10 +76,10 @@ class DtrbBearing(BearingBase):
     def at_temperatures(self, temperatures) -> "DtrbBearing":
         """This bearing with the preload delta0 its parts' growth at ``temperatures``
         (``thermal.growth_bearings.BearingTemperatures``) gives: the assembled delta0 + the change of
-        ``thermal.growth_bearings.dtrb_preload_change`` (rings and rollers of ``body``).  A preload that
+        :func:`.thermal.dtrb_preload_change` (rings and rollers of ``body``).  A preload that
         growth takes below zero is a clearance (negative delta0)."""
         from ...thermal.growth import BEARING_STEEL
-        from ...thermal.growth_bearings import dtrb_preload_change
+        from .thermal import dtrb_preload_change
 
         change = dtrb_preload_change(self.geometry, temperatures, BEARING_STEEL if self.body is None else self.body)
         return self.with_preload(self.made_preload_m + change.preload_change_m, held=self._held,

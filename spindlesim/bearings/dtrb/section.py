@@ -42,6 +42,7 @@ from pydantic import Field, model_validator
 
 from ...fields import AnyNumber, DeckModel, Load5, NodeNumber, PositiveFloat
 from ..damping import RollingDamping
+from ..plausible import Found, metres, rolling_damping
 from ..temperatures import Expansion, PartTemperatures, body
 
 Count = Annotated[int, Field(ge=2, le=2000)]
@@ -208,3 +209,24 @@ def build(entry: DtrbBearingEntry):
 def at_deck_temperatures(bearing, temps: "PartTemperatures | None"):
     """``bearing`` at the deck's prescribed temperatures (itself without them)."""
     return bearing if temps is None else bearing.at_temperatures(temps.si())
+
+
+# ---- what the family answers for itself (its row of BEARING_TYPES, bearings/types.py) ----------------------
+def plausibility(entry: DtrbBearingEntry, at: tuple) -> Found:
+    """Likely unit mistakes of the entry at the key path ``at``: its damping, its diameters (metres?)."""
+    bad: Found = []
+    rolling_damping(entry, at, bad)
+    metres(entry.geometry, at + ("geometry",), ("pitch_diameter_mm", "large_end_diameter_mm"), bad)
+    return bad
+
+
+def holds_axially(entry: DtrbBearingEntry) -> bool:
+    """With ``dofs: 5`` the bearing couples the rotor's axial DOF; with ``dofs: 2`` it acts on x and y only."""
+    return entry.dofs == 5
+
+
+def thermal_set(entry: DtrbBearingEntry, z_m: float):
+    """Its set in the spindle's thermal network (:func:`.thermal.thermal_set`)."""
+    from .thermal import thermal_set as of_entry
+
+    return of_entry(entry, z_m)

@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Annotated, Literal, Optional
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Fraction, NodeNumber, NonNegFloat, PositiveFloat
+from ..plausible import Found, clearance, metres
 
 if TYPE_CHECKING:
     from .bearing import FluidFilmBearing
@@ -230,3 +231,13 @@ def build(entry) -> "FluidFilmBearing":
         oil_flow=entry.thermal.oil_flow)
     return FluidFilmBearing(entry.name, entry.node - 1, geo, visc, th, entry.load_N,
                             entry.grid.circumferential, entry.grid.axial, transient_film=entry.transient_film)
+
+
+def plausibility(entry, at: tuple) -> Found:
+    """Likely unit mistakes of a fluid-film entry at the key path ``at``: its diameter and width (metres?), a
+    clearance over 1 % of the journal diameter (micrometres?)."""
+    bad: Found = []
+    metres(entry, at, ("diameter_mm", "width_mm"), bad)
+    c = entry.clearance_mm
+    clearance(c, entry.diameter_mm, "clearance_mm", "the journal diameter", at, bad, f" ({c:g} um = {c * 1e-3:g} mm)")
+    return bad

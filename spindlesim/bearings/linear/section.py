@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Annotated, Literal, Optional
 from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Matrix2, NodeNumber, NonNegFloat
+from ..plausible import Found, damping, stiffness
 
 if TYPE_CHECKING:
     from .bearing import LinearBearing
@@ -81,3 +82,18 @@ def build(entry: LinearEntry) -> "LinearBearing":
     C = entry.C_Ns_m if entry.C_Ns_m is not None else [[0.0, 0.0], [0.0, 0.0]]
     return LinearBearing(entry.name, entry.node - 1, np.array([0.0]),
                          np.asarray([entry.K_N_m], float), np.asarray([C], float))
+
+
+def plausibility(b: LinearEntry, at: tuple) -> Found:
+    """Likely unit mistakes of the entry at the key path ``at``: a stiffness below 1e5 N/m (N/mm or N/um?), a
+    damping whose ratio to it lies outside 1e-9 .. 1 s."""
+    bad: Found = []
+    if b.K_N_m is not None:
+        if stiffness(b.K_N_m, at + ("K_N_m",), bad):
+            damping(b.K_N_m, b.C_Ns_m, at + ("C_Ns_m",), bad)
+    if b.table is not None:
+        for j, K in enumerate(b.table.K_N_m):
+            if not stiffness(K, at + ("table", "K_N_m", j), bad):
+                break
+            damping(K, b.table.C_Ns_m[j], at + ("table", "C_Ns_m", j), bad)
+    return bad

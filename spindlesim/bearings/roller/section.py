@@ -33,6 +33,7 @@ from pydantic import Field, model_validator
 
 from ...fields import DeckModel, Fraction, NodeNumber, NonNegFloat, PositiveFloat
 from ..damping import RollingDamping, damping_of
+from ..plausible import Found, clearance, metres, rolling_damping
 from ..temperatures import Expansion, PartTemperatures, body
 
 if TYPE_CHECKING:
@@ -196,10 +197,10 @@ class RollerEntry(RollerGeometry):
 
 def operating_clearance_mm(e: RollerEntry) -> float:
     """The entry's radial clearance, at ``temperatures_C`` when given: plus half the change of the
-    diametral clearance d_o' - d_i' - 2 D_w' (``thermal.growth_bearings.roller_operating_clearance``)."""
+    diametral clearance d_o' - d_i' - 2 D_w' (:func:`.thermal.roller_operating_clearance`)."""
     if e.temperatures_C is None:
         return e.radial_clearance_mm
-    from ...thermal.growth_bearings import roller_operating_clearance
+    from .thermal import roller_operating_clearance
 
     grown = roller_operating_clearance(e.inner_raceway_diameter_mm * 1e-3, e.outer_raceway_diameter_mm * 1e-3,
                                        e.roller_diameter_mm * 1e-3, e.temperatures_C.si(), _body(e))
@@ -256,3 +257,31 @@ def build(e: RollerEntry) -> Union["RigidRaceBearing", "FlexibleRaceBearing"]:
     support = HousingSupport(hc, 0.0, h.tangential_stiffness_N_m2 * arc,
                              rocking_arc_m=arc if h.surface_contact else 0.0)
     return FlexibleRaceBearing(e.name, node, kin, e.rollers, ring, rc, support, e.width_mm * 1e-3, e.density_kg_m3)
+
+
+# ---- what the family answers for itself (its row of BEARING_TYPES, bearings/types.py) ----------------------
+def plausibility(entry: RollerEntry, at: tuple) -> Found:
+    """Likely unit mistakes of the entry at the key path ``at``: its damping, its raceway diameters (metres?),
+    a radial clearance over 1 % of the inner raceway diameter (micrometres?)."""
+    bad: Found = []
+    rolling_damping(entry, at, bad)
+    metres(entry, at, ("inner_raceway_diameter_mm", "outer_raceway_diameter_mm"), bad)
+    clearance(entry.radial_clearance_mm, entry.inner_raceway_diameter_mm, "radial_clearance_mm",
+              "the inner raceway diameter", at, bad, "")
+    return bad
+
+
+def thermal_refusal(entry: RollerEntry) -> str | None:
+    """Why the entry cannot be in the spindle's thermal network (None: it can): the network takes Palmgren's
+    cylindrical roller bearing, rigid races and rollers."""
+    if entry.model != "rigid_race" or entry.element != "roller":
+        return ("the spindle's thermal network takes a roller entry with model: rigid_race and element: roller "
+                "(Palmgren's cylindrical roller bearing)")
+    return None
+
+
+def thermal_set(entry: RollerEntry, z_m: float):
+    """Its set in the spindle's thermal network (:func:`.thermal.thermal_set`)."""
+    from .thermal import thermal_set as of_entry
+
+    return of_entry(entry, z_m)

@@ -41,7 +41,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.special import ellipe
 
-from .friction import RPM, Lubricant
+from ...thermal.friction import RPM, Lubricant
+from ..rolling import RING_PROPORTION, pitch_ratio
 
 AIR_DENSITY_KG_M3 = 1.2
 AIR_VISCOSITY_PA_S = 1.8e-5
@@ -215,7 +216,8 @@ def ball_bearing_heat(state, geometry, lubricant: Lubricant, lubricant_C: float,
           else options.traction_coefficient)
     phi = inlet_shear_heating_factor(w, nu, dm) if options.inlet_shear_heating else 1.0
     # starvation: the bearing's bore and outside diameter from its pitch and ball diameters (d_m -+ 1.575 D)
-    phi *= replenishment_factor(w, nu, dm - 1.575 * D, dm + 1.575 * D, options.starvation_K_rs, options.geometry_K_Z)
+    phi *= replenishment_factor(w, nu, dm - RING_PROPORTION * D, dm + RING_PROPORTION * D, options.starvation_K_rs,
+                                options.geometry_K_Z)
     E_prime = 2.0 * g.E_star_Pa
     out = {}
     for side, Q, ang, ax, u, spin, sgn in (
@@ -225,7 +227,7 @@ def ball_bearing_heat(state, geometry, lubricant: Lubricant, lubricant_C: float,
              kin.rolling_outer_m_s, kin.spin_outer_rad_s, 1.0)):
         Qp = np.maximum(Q, 0.0)
         a, b = ax[..., 0], ax[..., 1]
-        gam = D * np.cos(np.radians(ang)) / dm
+        gam = pitch_ratio(D, np.radians(ang), dm)
         Rx = 0.5 * D * (1.0 + sgn * gam)
         loaded = Qp > 0.0
         spin_W = np.where(loaded, _spin_moment(mu, Qp, a, b) * np.abs(spin), 0.0)

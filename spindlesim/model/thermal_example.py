@@ -14,11 +14,10 @@ from __future__ import annotations
 
 import math
 
-from .layout import (BearingSet, CoolingJacket, HousingSegment, MotorLayout, ShaftSegment, Solid,
-                     SpindleLayout)
-from .motor import MotorRating
-
-SILICON_NITRIDE = Solid(25.0, 3200.0, 700.0)
+from ..bearings.ball.thermal import SILICON_NITRIDE
+from ..bearings.conductance import ball_set
+from ..thermal.layout import CoolingJacket, HousingSegment, MotorLayout, ShaftSegment, SpindleLayout
+from ..thermal.motor import MotorRating
 
 #: (OD, length) of the deck's 18 shaft elements [mm]; bore 36 mm
 _SHAFT_MM = [(90, 15), (90, 15), (70, 22.5), (70, 22.5), (80, 22.5), (80, 22.5)] + [(75, 30)] * 6 + \
@@ -36,10 +35,10 @@ def milling_spindle_layout(*, ambient_C: float = 20.0, coolant_l_min: float = 4.
                   for k, (d, l) in enumerate(_SHAFT_MM))
     housing = tuple(HousingSegment(l * mm, di * mm, do * mm) for di, do, l in _HOUSING_MM)
     a15 = math.radians(15.0)
-    front = BearingSet("front", 52.5 * mm, 70 * mm, 110 * mm, 40 * mm, 36, 12.7 * mm, 90 * mm, a15, 150.0,
-                       ball=SILICON_NITRIDE, ball_E_Pa=310e9, ball_poisson=0.26)
-    rear = BearingSet("rear", 390 * mm, 60 * mm, 95 * mm, 36 * mm, 34, 11.1125 * mm, 77.5 * mm, a15,
-                      300.0 / (17 * math.sin(a15)))
+    front = ball_set("front", 52.5 * mm, 70 * mm, 110 * mm, 40 * mm, 36, 12.7 * mm, 90 * mm, a15, 150.0,
+                     ball=SILICON_NITRIDE, ball_E_Pa=310e9, ball_poisson=0.26)
+    rear = ball_set("rear", 390 * mm, 60 * mm, 95 * mm, 36 * mm, 34, 11.1125 * mm, 77.5 * mm, a15,
+                    300.0 / (17 * math.sin(a15)))
     motor = MotorLayout(120 * mm, 180 * mm, 75 * mm, 110 * mm, 160 * mm, 0.5 * mm,
                         MotorRating(18e3, 0.90, 9000 * math.pi / 30))
     jacket = CoolingJacket(120 * mm, 180 * mm, 1, 8 * mm, 10 * math.pi * 0.17, coolant_l_min / 60e3, inlet_C,

@@ -1,5 +1,7 @@
-"""Internal conductances of an angular-contact ball bearing: inner ring -- balls -- outer ring, and
-balls -- bearing cavity (oil-air), SI.
+"""Internal conductances of a rolling bearing in the spindle's thermal network: inner ring -- rolling elements --
+outer ring, and rolling elements -- bearing cavity (oil-air), SI.  The families' contact paths
+(:class:`BallContactPaths`, :class:`RollerContactPaths`) answer the network's question (the protocol
+:class:`spindlesim.thermal.layout.ContactPaths`): each bearing set carries its family's.
 
 Model (the two paths of the spindle-bearing networks of Stein and Tu 1994 and Bossmanns and Tu
 1999, contact conduction and convection to the lubricant; the formulas below are taken from their
@@ -28,36 +30,33 @@ Contact ellipses from the ball loads: Hamrock and Brewe's approximations (J. Lub
 (1983) 171-177) of the Hertz solution, k = a/b = 1.0339 (R_y/R_x)^0.636, E(k) = 1.0003 + 0.5968
 R_x/R_y, a = (6 k^2 E Q R / (pi E'))^(1/3), b = (6 E Q R / (pi k E'))^(1/3), 1/R = 1/R_x + 1/R_y,
 with R_x = (D/2)(1 -+ gamma) (inner/outer race, rolling direction) and R_y = f D / (2 f - 1)
-(across; f the groove conformity) -- within a few per cent of the exact ellipse (tested against
-:func:`spindlesim.contact.hertz.point_contact`).
+(across; f the groove conformity): :func:`spindlesim.contact.hertz.point_contact_semi_axes_estimate`, the one
+routine of it, within a few per cent of the exact ellipse (:func:`spindlesim.contact.hertz.point_contact`, tested).
+gamma = D cos(alpha) / d_m is :func:`spindlesim.bearings.rolling.pitch_ratio`.
 
 Film thickness: :func:`central_film_thickness` gives Hamrock and Dowson's central film
 (J. Lubr. Technol. 99 (1977) 264-276): H_c = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k)),
 U = eta0 u / (E' R_x), G = alpha E', W = Q / (E' R_x^2), k = 1.0339 (R_y/R_x)^0.636, h_c = H_c R_x
 (E' = 2 E*, u the mean entrainment speed).
+
+docs/theory.md, "Ball bearing internal conductances".
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .convection import whitaker_sphere_nusselt
-from .properties import FluidProperties
+from ..contact.hertz import ellipticity_estimate, point_contact_semi_axes_estimate
+from ..thermal.convection import rotating_shaft_h, whitaker_sphere_nusselt
+from ..thermal.layout import BearingConductances, BearingSet
+from ..thermal.properties import FluidProperties, air, clip_air_C
+from .rolling import pitch_ratio
 
 #: conductivity of a mineral spindle oil [W/(m K)] (0.12-0.15 for mineral oils)
 OIL_CONDUCTIVITY_W_MK = 0.13
-
-
-@dataclass(frozen=True)
-class BearingConductances:
-    """Conductances [W/K] of one bearing (all rows together)."""
-
-    inner_balls_W_K: float
-    balls_outer_W_K: float
-    balls_cavity_W_K: float
 
 
 def ellipse_constriction_resistance(a_m, b_m, conductivity_W_mK: float):
@@ -84,23 +83,22 @@ def contact_conductance(a_m, b_m, k_ball_W_mK: float, k_race_W_mK: float, film_m
 def race_radii(ball_diameter_m: float, pitch_diameter_m: float, contact_angle_rad: float, conformity: float,
                race: str) -> tuple[float, float]:
     """(R_x, R_y) [m] of the ball's contact with the ``race`` ("inner" or "outer")."""
-    g = ball_diameter_m * math.cos(contact_angle_rad) / pitch_diameter_m
+    g = pitch_ratio(ball_diameter_m, contact_angle_rad, pitch_diameter_m)
     sign = {"inner": -1.0, "outer": 1.0}[race]
     return 0.5 * ball_diameter_m * (1.0 + sign * g), conformity * ball_diameter_m / (2.0 * conformity - 1.0)
 
 
 def contact_ellipse_unit(rx_m: float, ry_m: float, e_prime_Pa: float) -> tuple[float, float]:
-    """(a1, b1) with a = a1 Q^(1/3), b = b1 Q^(1/3) (Hamrock-Brewe; a across the rolling direction)."""
-    k = 1.0339 * (ry_m / rx_m) ** 0.636
-    ek = 1.0003 + 0.5968 * rx_m / ry_m
-    r = 1.0 / (1.0 / rx_m + 1.0 / ry_m)
-    return (6.0 * k * k * ek * r / (math.pi * e_prime_Pa)) ** (1.0 / 3.0), (6.0 * ek * r / (math.pi * k * e_prime_Pa)) ** (1.0 / 3.0)
+    """(a1, b1) with a = a1 Q^(1/3), b = b1 Q^(1/3) (a across the rolling direction): the ellipse of a unit load,
+    :func:`spindlesim.contact.hertz.point_contact_semi_axes_estimate` (E* = E' / 2)."""
+    along, across = point_contact_semi_axes_estimate(1.0, rx_m, ry_m, 0.5 * e_prime_Pa)
+    return across, along
 
 
 def ball_spin_surface_speed(speed_rad_s: float, ball_diameter_m: float, pitch_diameter_m: float,
                             contact_angle_rad: float) -> float:
     """omega_ball D / 2 [m/s], omega_ball = (d_m / 2D) omega (1 - gamma^2)."""
-    g = ball_diameter_m * math.cos(contact_angle_rad) / pitch_diameter_m
+    g = pitch_ratio(ball_diameter_m, contact_angle_rad, pitch_diameter_m)
     w_ball = 0.5 * pitch_diameter_m / ball_diameter_m * abs(speed_rad_s) * (1.0 - g * g)
     return 0.5 * w_ball * ball_diameter_m
 
@@ -119,7 +117,7 @@ def central_film_thickness(entrainment_speed_m_s: float, viscosity_Pa_s: float, 
     U = viscosity_Pa_s * entrainment_speed_m_s / (e_prime_Pa * rx_m)
     G = pressure_viscosity_1_Pa * e_prime_Pa
     W = load_N / (e_prime_Pa * rx_m * rx_m)
-    k = 1.0339 * (ry_m / rx_m) ** 0.636
+    k = ellipticity_estimate(rx_m, ry_m)
     return 2.69 * U ** 0.67 * G ** 0.53 * W ** -0.067 * (1.0 - 0.61 * math.exp(-0.73 * k)) * rx_m
 
 
@@ -155,7 +153,7 @@ def line_contact_half_width(load_N, rx_m: float, length_m: float, e_prime_Pa: fl
 def roller_spin_speed(speed_rad_s: float, roller_diameter_m: float, pitch_diameter_m: float,
                       contact_angle_rad: float) -> float:
     """Roller spin [rad/s]: (d_m / 2D) omega (1 - gamma^2), gamma = D cos(alpha) / d_m (pure rolling)."""
-    g = roller_diameter_m * math.cos(contact_angle_rad) / pitch_diameter_m
+    g = pitch_ratio(roller_diameter_m, contact_angle_rad, pitch_diameter_m)
     return 0.5 * pitch_diameter_m / roller_diameter_m * abs(speed_rad_s) * (1.0 - g * g)
 
 
@@ -183,3 +181,93 @@ def roller_bearing_conductances(*, speed_rad_s: float, rollers: int, roller_diam
     area = rollers * (math.pi * roller_diameter_m * roller_length_m + 0.5 * math.pi * roller_diameter_m ** 2)
     return BearingConductances(ring(inner_half_width_m, film_inner_m), ring(outer_half_width_m, film_outer_m),
                                medium_h(roller_diameter_m, spin) * area)
+
+
+# ---- the families' contact paths: what the spindle's network asks a bearing set -----------------------------
+def contact_modulus_prime(s: BearingSet) -> float:
+    """E' = 2 E* [Pa] of the rolling elements on the rings of the set ``s``."""
+    return 2.0 / ((1.0 - s.ring_poisson ** 2) / s.ring_E_Pa + (1.0 - s.ball_poisson ** 2) / s.ball_E_Pa)
+
+
+@dataclass(frozen=True)
+class BallContactPaths:
+    """A ball set's paths (:class:`spindlesim.thermal.layout.ContactPaths`): Hertz point contacts whose ellipses
+    scale as Q^(1/3) (``*_unit_m``: the semi-axes (across, along rolling) of a 1 N contact), and the balls'
+    convection to the oil-air.  :meth:`of` computes them from the set."""
+
+    inner_unit_m: tuple[float, float]
+    outer_unit_m: tuple[float, float]
+    elements: str = "balls"
+
+    @classmethod
+    def of(cls, s: BearingSet) -> "BallContactPaths":
+        e_prime = contact_modulus_prime(s)
+        args = (s.ball_diameter_m, s.pitch_diameter_m, s.contact_angle_rad)
+        r_i, r_o = race_radii(*args, s.inner_conformity, "inner"), race_radii(*args, s.outer_conformity, "outer")
+        return cls(contact_ellipse_unit(*r_i, e_prime), contact_ellipse_unit(*r_o, e_prime))
+
+    def elements_mass_kg(self, s: BearingSet) -> float:
+        return s.balls * s.ball.density_kg_m3 * math.pi * s.ball_diameter_m ** 3 / 6.0
+
+    def conductances(self, s: BearingSet, speed_rad_s: float, inner_N, outer_N, film_inner_m, film_outer_m,
+                     cavity_C: float) -> BearingConductances:
+        (a1i, b1i), (a1o, b1o) = self.inner_unit_m, self.outer_unit_m
+        qi, qo = np.maximum(inner_N, 0.0) ** (1.0 / 3.0), np.maximum(outer_N, 0.0) ** (1.0 / 3.0)
+        return ball_bearing_conductances(
+            speed_rad_s=speed_rad_s, balls=s.balls, ball_diameter_m=s.ball_diameter_m,
+            pitch_diameter_m=s.pitch_diameter_m, contact_angle_rad=s.contact_angle_rad,
+            inner_axes_m=(a1i * qi, b1i * qi), outer_axes_m=(a1o * qo, b1o * qo), k_ball_W_mK=s.ball.conductivity_W_mK,
+            k_ring_W_mK=s.ring.conductivity_W_mK, medium=air(clip_air_C(cavity_C)), film_inner_m=film_inner_m,
+            film_outer_m=film_outer_m)
+
+
+@dataclass(frozen=True)
+class RollerContactPaths:
+    """A roller set's paths (:class:`spindlesim.thermal.layout.ContactPaths`): line contacts of the rollers'
+    length ``length_m`` on rolling radii R_x (inner, outer) with the modulus E', and the rollers' convection
+    as spinning cylinders.  :meth:`of` computes them from the set (the rollers' mean diameter its
+    ``ball_diameter_m``, a tapered roller bearing's cup angle its contact angle)."""
+
+    length_m: float
+    inner_rx_m: float
+    outer_rx_m: float
+    e_prime_Pa: float
+    elements: str = "rollers"
+
+    def __post_init__(self) -> None:
+        if self.length_m <= 0.0:
+            raise ValueError("a roller set needs its roller length")
+
+    @classmethod
+    def of(cls, s: BearingSet, length_m: float) -> "RollerContactPaths":
+        args = (s.ball_diameter_m, s.pitch_diameter_m, s.contact_angle_rad)
+        return cls(length_m, race_radii(*args, s.inner_conformity, "inner")[0],
+                   race_radii(*args, s.outer_conformity, "outer")[0], contact_modulus_prime(s))
+
+    def elements_mass_kg(self, s: BearingSet) -> float:
+        volume = 0.25 * math.pi * s.ball_diameter_m ** 2 * self.length_m
+        return s.balls * s.ball.density_kg_m3 * volume
+
+    def conductances(self, s: BearingSet, speed_rad_s: float, inner_N, outer_N, film_inner_m, film_outer_m,
+                     cavity_C: float) -> BearingConductances:
+        length, e_prime = self.length_m, self.e_prime_Pa
+        return roller_bearing_conductances(
+            speed_rad_s=speed_rad_s, rollers=s.balls, roller_diameter_m=s.ball_diameter_m, roller_length_m=length,
+            pitch_diameter_m=s.pitch_diameter_m, contact_angle_rad=s.contact_angle_rad,
+            inner_half_width_m=line_contact_half_width(inner_N, self.inner_rx_m, length, e_prime),
+            outer_half_width_m=line_contact_half_width(outer_N, self.outer_rx_m, length, e_prime),
+            k_roller_W_mK=s.ball.conductivity_W_mK, k_ring_W_mK=s.ring.conductivity_W_mK,
+            medium_h=lambda d, w: rotating_shaft_h(d, w, clip_air_C(cavity_C + 10.0), clip_air_C(cavity_C)),
+            film_inner_m=film_inner_m, film_outer_m=film_outer_m)
+
+
+def ball_set(*args, **kwargs) -> BearingSet:
+    """A ball :class:`~spindlesim.thermal.layout.BearingSet` (its arguments) with its :class:`BallContactPaths`."""
+    s = BearingSet(*args, **kwargs)
+    return replace(s, paths=BallContactPaths.of(s))
+
+
+def roller_set(*args, roller_length_m: float, **kwargs) -> BearingSet:
+    """A roller :class:`~spindlesim.thermal.layout.BearingSet` with its :class:`RollerContactPaths`."""
+    s = BearingSet(*args, **kwargs)
+    return replace(s, paths=RollerContactPaths.of(s, roller_length_m))
