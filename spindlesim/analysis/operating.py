@@ -47,6 +47,9 @@ class EquilibriumError(ArithmeticError):
 class SingularRotorError(ValueError):
     """The rotor is not held against rigid-body motion in the direction of its loads."""
 
+    #: where the deck holds what to correct (its supports), for a located message
+    deck_key = ("bearings",)
+
 
 class BearingSolveError(ValueError):
     """A bearing's own solver failed at an operating point; the message names the bearing and the speed."""

@@ -240,12 +240,30 @@ def run_command(name: str, loaded, call: Callable[[], list], close: Callable[[],
     # --- end run status ---
     except (ValueError, ArithmeticError, RuntimeError) as exc:  # numpy's LinAlgError is a ValueError
         close()
+        located = _located_input_error(name, loaded, exc)
+        if located is not None:
+            report_deck_error(located)
         fail(f"spindlesim {name}: {exc}{unit_hint(loaded)}", exit_code_of(exc))
     except OSError as exc:  # a file that cannot be written (disk full, a directory in the way, permissions)
         close()
         fail(f"spindlesim {name}: cannot write the results: {exc}", exit_code_of(exc))
     close()
     print_results(paths)
+
+
+def _located_input_error(name: str, loaded, exc: BaseException):
+    """An input error met while solving (a rotor not held, a fluid film at rest) that names the deck key holding
+    what to correct (``deck_key``): a DeckError located at that key's line, else None."""
+    if exit_code_of(exc) != EXIT_DECK_ERROR or not hasattr(loaded, "issue"):
+        return None
+    seen: BaseException | None = exc
+    while seen is not None and getattr(seen, "deck_key", None) is None:
+        seen = seen.__cause__
+    if seen is None:
+        return None
+    from ..deck import DeckError
+
+    return DeckError([loaded.issue(tuple(seen.deck_key), f"{name}: {exc}{unit_hint(loaded)}")])
 
 
 def fail(message: str, code: int) -> None:

@@ -21,6 +21,7 @@ from tests.processes import as_in_a_terminal
 SPINDLESIM = Path(__file__).parents[2] / ".venv" / "bin" / "spindlesim"
 RIG_DECK = (resources.files("spindlesim.decks") / "transient.yaml").read_text()
 LINEAR_DECK = (resources.files("spindlesim.decks") / "spindle_linear.yaml").read_text()
+ROOT = Path(__file__).parents[2]
 
 
 def _env() -> dict:
@@ -172,6 +173,27 @@ def test_input_errors_exit_2_with_one_clear_line(tmp_path):
     import json
 
     assert json.loads(js.stdout)["exit_code"] == 2
+
+
+def test_a_rotor_the_solver_finds_singular_is_a_located_deck_error(tmp_path):
+    """Issue 33 (found by the deck fuzzer at 20,000 examples): one shaft row 5e7 mm in diameter (inside the
+    physical range of a _mm key) makes the stiffness matrix singular; the error names the deck, the line of the
+    bearings and what to check, exit 2, nothing written (it was one unlocated line)."""
+    import json
+
+    deck = tmp_path / "wide.yaml"
+    deck.write_text((ROOT / "decks" / "validation" / "jeffcott_plain.yaml").read_text()
+                    .replace("- [50.0,", "- [50000000.0,", 1))
+    assert "50000000.0" in deck.read_text()
+    res = CliRunner().invoke(main, ["static", str(deck), "-o", str(tmp_path / "o")])
+    assert res.exit_code == 2, res.output
+    line = next(ln for ln in res.output.splitlines() if ln.startswith(str(deck)))
+    at = next(i for i, ln in enumerate(deck.read_text().splitlines(), 1) if ln.startswith("bearings:"))
+    assert line.startswith(f"{deck}:{at}:1: bearings: static: the stiffness matrix"), line
+    assert "nothing was written" in res.output and not (tmp_path / "o").exists()
+    js = _separate_streams().invoke(main, ["static", str(deck), "--json", "-o", str(tmp_path / "e")])
+    err = json.loads(js.stdout)["errors"][0]
+    assert err["line"] == at and err["key"] == "bearings"
 
 
 def test_json_on_a_deck_error_prints_the_errors_as_json(tmp_path):
