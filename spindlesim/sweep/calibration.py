@@ -183,6 +183,7 @@ def _intervals(params, x, jac, res_vec, lo, hi):
     for k, p in enumerate(params):
         a, b = x[k] - t * sig[k], x[k] + t * sig[k]
         undetermined = bool(dead[k] or (a <= lo[k] and b >= hi[k]))
+        a, b = max(a, lo[k]), min(b, hi[k])  # the value cannot leave its bounds: the interval ends there
         lower, upper = (float("nan"), float("nan")) if dead[k] else (float(p.from_x(a)), float(p.from_x(b)))
         rows.append((lower, upper, undetermined))
     return rows, corr
@@ -269,7 +270,7 @@ def _warnings(fitted, corr) -> tuple[str, ...]:
     for p in fitted:
         if p.at_bound:
             out.append(f"{p.path} sits at a bound ({p.value:.4g}, bounds {p.min:g} .. {p.max:g}): widen it or "
-                       "question the model")
+                       "question the model (its interval ends at the bound and is not a 95 % interval there)")
         if p.undetermined:
             out.append(f"{p.path} is not determined by the data (its 95 % interval is wider than its bounds): fix "
                        "it or measure what it changes")

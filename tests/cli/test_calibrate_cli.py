@@ -141,3 +141,21 @@ def test_the_run_report_shows_the_calibration_written_beside_it(tmp_path):
                  "Calibration: measured FRFs"):
         assert text in page, text
     assert (out / "calibration.h5").stat().st_mtime_ns == stamp
+
+
+def test_a_parameter_at_its_bound_from_the_start_is_said_and_its_interval_ends_there(tmp_path):
+    """Issue 33, item 4: the joint's lower bound raised to the deck's own value (4e8 N/m), below the truth of the
+    simulated taps (2.5e8): the fit stays on the bound, the summary says AT A BOUND and that the interval is not a
+    95 % one there, and the interval does not reach below the bound (it reached 3.75e8 before)."""
+    deck = _deck(tmp_path, ("{path: tool.joint.translational_N_m, min: 1.0e7, max: 1.0e10}",
+                            "{path: tool.joint.translational_N_m, min: 4.0e8, max: 1.0e10}"))
+    res, out = _run(tmp_path, deck)
+    assert res.exit_code == 0, res.output
+    assert "AT A BOUND" in res.output and "is not a 95 % interval there" in res.output
+    with h5py.File(out / "calibration.h5") as f:
+        names = [str(n) for n in f["calibration/parameter"][:].astype(str)]
+        k = names.index("tool.joint.translational_N_m")
+        assert bool(f["calibration/at_bound"][k])
+        assert f["calibration/value"][k] == pytest.approx(4.0e8, rel=1e-6)
+        assert f["calibration/lower_95"][k] >= 4.0e8 * (1 - 1e-9)
+        assert f["calibration/upper_95"][k] > 4.0e8
