@@ -40,7 +40,8 @@ def history_figure(res, title: str = ""):
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize="x-small", loc="best")
     axes[-1].set_xlabel("evaluation")
-    fig.suptitle(f"{title}\n{res.method}: {res.message}", fontsize="small")
+    none = "" if ok.any() else "; NO FEASIBLE DESIGN (the summary gives each constraint's range)"
+    fig.suptitle(f"{title}\n{res.method}: {res.message}{none}", fontsize="small")
     return fig
 
 
