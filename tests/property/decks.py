@@ -36,6 +36,7 @@ from pydantic import BaseModel
 
 from spindlesim.deck import DeckError, LoadedDeck, parse_deck
 from spindlesim.deck.document import deck_model
+from spindlesim.deck.limits import MAX_TEXT_CHARS
 from spindlesim.deck.yamlmarks import DeckLoader
 from spindlesim.fields import unit_range
 
@@ -83,7 +84,24 @@ def time_limit(seconds: float, what: str):
 
 
 def rss_mb() -> float:
+    """The process's peak resident size [MB]: since the last :func:`reset_peak` where Linux allows resetting it
+    (/proc/self/clear_refs, VmHWM), else since it started."""
+    try:
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("VmHWM:"):
+                return float(line.split()[1]) / 1024.0
+    except (OSError, ValueError, IndexError):
+        pass
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+
+
+def reset_peak() -> None:
+    """Start the peak resident size afresh, so that what is measured is the loader's own (a large deck the
+    strategies built before it, in the test's process, is not charged to it)."""
+    try:
+        Path("/proc/self/clear_refs").write_text("5")
+    except OSError:
+        pass
 
 
 def assert_located(text: str) -> None:
@@ -97,6 +115,7 @@ def assert_located(text: str) -> None:
 
 def check_load(text: str, filename: str = "fuzz.yaml") -> LoadedDeck | None:
     """Load ``text``; None when it is refused (after checking every issue is located)."""
+    reset_peak()
     with time_limit(PARSE_SECONDS, "reading the deck"):
         try:
             loaded = parse_deck(text, filename)
@@ -250,6 +269,10 @@ def _mutate_data(draw, data, kinds=DATA_MUTATIONS):
             path = draw(st.sampled_from(lists))
             items = _get(data, path)
             n = draw(st.sampled_from([20, 201, 501, 1001, 10_000]))
+            # bounded: mutations compound (a list of 10,000 copies of a list of 10,000), and building such a deck
+            # took the test process to 24 GB before the loader saw it; texts up to twice the loader's limit remain
+            per_item = len(repr(items)) / len(items)
+            n = min(n, max(20, int(2 * MAX_TEXT_CHARS / max(per_item, 1.0))))
             _set(data, path, [copy.deepcopy(items[i % len(items)]) for i in range(n)])
     elif kind == "nest":
         for _ in range(draw(st.integers(1, 40))):
