@@ -30,7 +30,7 @@ test: install-test
 test-fast: install-test
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 MPLBACKEND=Agg $(BIN)/python -m pytest -m "not slow"
 
-# Property tests of the deck loader with many more examples than `make test` (20,000 a test: about 1.5 hours);
+# Property tests of the deck loader with many more examples than `make test` (20,000 a test: about 28 minutes);
 # FUZZ=long for ten times as many.  A failure prints the deck text that reproduces it.
 FUZZ ?= fuzz
 fuzz: install-test
