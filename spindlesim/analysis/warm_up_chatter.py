@@ -40,11 +40,6 @@ class StableDepth:
     method: str
     failures: tuple[str, ...] = field(default=())
 
-    @property
-    def lowest(self) -> int | None:
-        """Index of the instant with the smallest limit depth (None when none was found)."""
-        return int(np.nanargmin(self.depth_m)) if np.isfinite(self.depth_m).any() else None
-
 
 _NAMES = {"semi_discretization": "semi-discretization", "zero_order": "zero order", "oriented_frf": "oriented FRF"}
 

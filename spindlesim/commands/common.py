@@ -252,8 +252,8 @@ def run_command(name: str, loaded, call: Callable[[], list], close: Callable[[],
 
 
 def _located_input_error(name: str, loaded, exc: BaseException):
-    """An input error met while solving (a rotor not held, a fluid film at rest) that names the deck key holding
-    what to correct (``deck_key``): a DeckError located at that key's line, else None."""
+    """An input error met while solving that names the deck key holding what to correct (``deck_key``: a rotor not
+    held names its bearings): a DeckError located at that key's line, else None."""
     if exit_code_of(exc) != EXIT_DECK_ERROR or not hasattr(loaded, "issue"):
         return None
     seen: BaseException | None = exc
