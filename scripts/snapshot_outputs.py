@@ -23,8 +23,22 @@ RUNS = [
     ("coefficients", "seed003_three_lobe.yaml"), ("modal", "lathe_headstock.yaml"), ("thermal", "lathe_headstock.yaml"),
     ("bearing", "ball_single_row.yaml"), ("dtrb", "dtrb_wheel_hub.yaml"), ("contact", "contact_roller.yaml"),
     ("transient", "seed000_roller_bearing.yaml", "--duration", "0.05"), ("tools", "tool_library.yaml", "--no-lobes"),
-    ("chatter", "seed003_spindle_linear.yaml"),
+    ("chatter", "seed003_spindle_linear.yaml"), ("chatter", "milling_spindle.yaml"),
+    ("run", "milling_spindle.yaml"), ("run", "seed003_three_lobe.yaml"),
 ]
+
+
+def _report_text(path: Path) -> str:
+    """report.html without its times and folder names: the verdicts and each analysis's summary lines."""
+    import re
+
+    if not path.is_file():
+        return ""
+    text = path.read_text()
+    text = re.sub(r"data:image/png;base64,[A-Za-z0-9+/=]+", "PNG", text)
+    text = re.sub(r"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d[^<\"]*", "TIME", text)
+    text = re.sub(r"/tmp/[A-Za-z0-9_./-]+", "TMP", text)
+    return text
 
 
 def _value(v):
@@ -63,7 +77,16 @@ def snapshot() -> dict:
                     f.visititems(visit)
                 files[p.name] = d
             text = "\n".join(ln for ln in res.output.splitlines() if not ln.startswith(("/", tmp)))
-            out[key] = {"exit": res.exit_code, "summary": text, "files": files}
+            report = _report_text(Path(tmp) / "report.html")
+        with tempfile.TemporaryDirectory() as tmp:
+            res = CliRunner().invoke(main, [cmd, str(ROOT / "decks" / deck), "-o", tmp, "--json", *opts])
+            try:
+                data = json.loads(res.output.splitlines()[-1])
+                data.pop("paths", None)
+            except (ValueError, IndexError):
+                data = res.output
+            out[key] = {"exit": res.exit_code, "summary": text, "files": files, "report": report,
+                        "json": json.dumps(data, sort_keys=True, default=str)}
         print(f"{key}: exit {res.exit_code}", file=sys.stderr)
     return out
 
@@ -77,8 +100,9 @@ def compare(a: dict, b: dict) -> list[str]:
         x, y = a[key], b[key]
         if x["exit"] != y["exit"]:
             diffs.append(f"{key}: exit {x['exit']} -> {y['exit']}")
-        if x["summary"] != y["summary"]:
-            diffs.append(f"{key}: summary differs")
+        for part in ("summary", "report", "json"):
+            if x.get(part) != y.get(part):
+                diffs.append(f"{key}: {part} differs")
         for fname in sorted(set(x["files"]) | set(y["files"])):
             fx, fy = x["files"].get(fname, {}), y["files"].get(fname, {})
             for ds in sorted(set(fx) | set(fy)):

@@ -7,7 +7,7 @@ import json
 import logging
 import sys
 from pathlib import Path
-from typing import Callable
+from typing import Any, Callable
 
 import click
 
@@ -149,9 +149,30 @@ def report_options(fn):
     return wrapper
 
 
+def summaries_of(items) -> list:
+    """[(file name, lines, data)] of runs' results: ``items`` are (``runs.status.Written``, None, or the reason an
+    incomplete run's files carry).  A summary that fails is a logged warning: it never hides the results."""
+    from ..output.summary import summarize_written
+
+    out = []
+    for written, reason in items:
+        try:
+            out += summarize_written(written, reason)
+        except Exception as exc:  # noqa: BLE001 - a summary must never hide the results themselves
+            log.warning("results summary of %s unavailable: %s", written.analysis or "the run", exc)
+    return out
+
+
+def print_written(items) -> None:
+    """The paths the runs wrote, then the summary of each one's result (``items`` as :func:`summaries_of`'s)."""
+    paths = [p for written, _ in items for p in written.paths]
+    print_results(paths, summaries_of(items))
+
+
 def print_results(paths: list[Path], summaries: list | None = None) -> None:
-    """The written paths, then a short summary of the key results read back from the files (or JSON);
-    ``summaries``: [(name, lines, data)] built by the command from its result instead."""
+    """The written paths, then a short summary of the key results (or JSON): ``summaries`` [(name, lines, data)]
+    built from the results (:func:`summaries_of`); without them, read back from the files (the studies
+    ``calibrate`` and ``optimize`` write)."""
     ctx = click.get_current_context(silent=True)
     mode = ctx.meta.get("spindlesim.report", "text") if ctx is not None else "text"
     if mode == "quiet":
@@ -202,31 +223,35 @@ def run_and_report(name: str, deck: Path | None, outdir: Path | None, options: d
 def _run_and_report(name: str, deck: Path | None, outdir: Path | None, default_name: str, options: dict) -> None:
     import gc
 
-    from ..runs import run_analysis, run_info_for
+    from ..runs import perform_analysis, run_info_for
 
     loaded = load_or_default(deck, default_name)
     gc.freeze()  # the modules imported so far are never garbage: later collections need not walk them
     out = resolve_outdir(outdir, loaded)
     update, close = progress_reporter(name)
-    run_command(name, loaded, lambda: run_analysis(name, loaded, out, options, progress=update,
-                                                   run=run_info_for(loaded, " ".join(sys.argv))), close)
+    run_command(name, loaded, lambda: perform_analysis(name, loaded, out, options, progress=update,
+                                                       run=run_info_for(loaded, " ".join(sys.argv))), close)
 
 
-def run_command(name: str, loaded, call: Callable[[], list], close: Callable[[], None]) -> None:
-    """``call()`` (a run that writes files and returns their paths), then the paths and the summary; how it ended
+def run_command(name: str, loaded, call: Callable[[], Any], close: Callable[[], None]) -> None:
+    """``call()`` (a run that writes files and returns a ``runs.status.Written``, or the paths of a study's files),
+    then the paths and the summary; how it ended
     becomes an exit code and one line (a deck error, an incomplete or interrupted run, a solver failure)."""
     from ..deck import DeckError
-    from ..runs.status import IncompleteRun
+    from ..runs.status import IncompleteRun, Written
 
     try:
-        paths = call()
+        done = call()
     except DeckError as exc:
         close()
         report_deck_error(exc)
     # --- run status (spindlesim/runs/status.py): incomplete runs and Ctrl-C have their own exit codes ---
     except IncompleteRun as exc:  # the files are written, marked complete = False
         close()
-        print_results(exc.paths)
+        if exc.result is not None:
+            print_written([(exc.written, exc.noted)])
+        else:
+            print_results(exc.paths)
         code = exit_code_of(exc)
         click.echo(f"spindlesim {name}: {exc.reason}; the files are marked complete = False "
                    f"(exit code {code})", err=True)
@@ -248,7 +273,10 @@ def run_command(name: str, loaded, call: Callable[[], list], close: Callable[[],
         close()
         fail(f"spindlesim {name}: cannot write the results: {exc}", exit_code_of(exc))
     close()
-    print_results(paths)
+    if isinstance(done, Written):
+        print_written([(done, None)])
+    else:
+        print_results(done)
 
 
 def _located_input_error(name: str, loaded, exc: BaseException):

@@ -43,11 +43,11 @@ def command(deck, outdir, no_report):
 
 
 def _run(deck, outdir, report: bool = True) -> None:
-    from ..runs import default_analyses, run_analysis, run_info_for
+    from ..runs import default_analyses, perform_analysis, run_info_for
     from ..runs.status import IncompleteRun
     from ..deck import DeckError
     from ..output.report import RunReport
-    from .common import print_results, report_deck_error, unit_hint
+    from .common import print_results, report_deck_error, summaries_of, unit_hint
     from .exits import outcome_code
 
     loaded = load_or_default(deck, default_decks()["run"])
@@ -61,27 +61,30 @@ def _run(deck, outdir, report: bool = True) -> None:
     out = resolve_outdir(outdir, loaded)
     info = run_info_for(loaded, " ".join(sys.argv))
     written, failed, incomplete = [], [], []
+    results: list = []  # (Written, None or the reason an incomplete run's files carry): the summaries
     from ..runs.common import RunContext
 
     shared = RunContext(loaded)  # one assembly, each operating point and the thermal speed limit solved once
     with RunReport(loaded, info, out, names) as book:  # collects the warnings logged meanwhile
         for name in names:
             try:
-                paths = run_analysis(name, shared, out, {}, run=info)
-                written += paths
-                book.done(name, paths)
+                done = perform_analysis(name, shared, out, {}, run=info)
+                written += done.paths
+                results.append((done, None))
+                book.done(name, done.paths, done)
             except DeckError as exc:
                 report_deck_error(exc)
             except IncompleteRun as exc:  # written, marked complete = False
                 written += exc.paths
-                book.incomplete(name, exc.paths, exc.reason)
+                results.append((exc.written, exc.noted))
+                book.incomplete(name, exc.paths, exc.reason, exc.written, exc.noted)
                 click.echo(f"spindlesim run: {name}: {exc.reason}; its files are marked complete = False", err=True)
                 if exc.interrupted:
-                    _stop(names, name, written, book if report else None)
+                    _stop(names, name, written, results, book if report else None)
                 incomplete.append(name)
             except KeyboardInterrupt:
                 book.interrupted(name)
-                _stop(names, name, written, book if report else None)
+                _stop(names, name, written, results, book if report else None)
             except (ValueError, ArithmeticError, RuntimeError, OSError) as exc:  # LinAlgError is a ValueError
                 click.echo(f"spindlesim run: {name} failed: {exc}{unit_hint(loaded)}", err=True)
                 book.failed(name, exc)
@@ -90,7 +93,7 @@ def _run(deck, outdir, report: bool = True) -> None:
         _studies_written(loaded, out, book)
     if report and not _write_report(book, written):
         failed.append("report")
-    print_results(written)
+    print_results(written, summaries_of(results))
     code = outcome_code(failed=bool(failed), incomplete=bool(incomplete))
     if failed:
         click.echo(f"spindlesim run: failed: {', '.join(failed)} (exit code {code})", err=True)
@@ -100,11 +103,11 @@ def _run(deck, outdir, report: bool = True) -> None:
         sys.exit(code)
 
 
-def _stop(names: list, name: str, written: list, book=None) -> None:
+def _stop(names: list, name: str, written: list, results: list, book=None) -> None:
     """Ctrl-C: the analyses after ``name`` are not started; the report says so; what was written is
     listed; exit code 130."""
     from ..sweep.execution import sigint_ignored
-    from .common import print_results
+    from .common import print_results, summaries_of
     from .exits import outcome_code
 
     rest = names[names.index(name) + 1:]
@@ -114,7 +117,7 @@ def _stop(names: list, name: str, written: list, book=None) -> None:
     with sigint_ignored():
         if book is not None:
             _write_report(book, written)
-        print_results(written)
+        print_results(written, summaries_of(results))
     sys.exit(code)
 
 

@@ -17,7 +17,8 @@ Usage (``spindlesim/commands/run.py``)::
 
     with RunReport(loaded, run_info, outdir, names) as report:   # collects log warnings meanwhile
         for name in names:
-            report.done(name, run_analysis(name, ...))           # or .incomplete / .failed / .interrupted
+            done = perform_analysis(name, ...)
+            report.done(name, done.paths, done)                  # or .incomplete / .failed / .interrupted
     report.write()                                               # outdir/report.html, atomically
 """
 
@@ -107,6 +108,10 @@ class Outcome:
     status: str = NOT_RUN
     paths: list[Path] = field(default_factory=list)
     message: str = ""
+    #: what the run handed back (``runs.status.Written``: its result), None for a study read from its file
+    written: Any = None
+    #: an incomplete run's reason as its files carry it
+    noted: str | None = None
 
 
 @dataclass
@@ -156,11 +161,12 @@ class RunReport:
         logging.getLogger("spindlesim").removeHandler(self._handler)
 
     # --- outcomes, in the order of ``names`` ---
-    def done(self, name: str, paths: Iterable[Path]) -> None:
-        self.outcomes.append(Outcome(name, DONE, [Path(p) for p in paths]))
+    def done(self, name: str, paths: Iterable[Path], written: Any = None) -> None:
+        self.outcomes.append(Outcome(name, DONE, [Path(p) for p in paths], written=written))
 
-    def incomplete(self, name: str, paths: Iterable[Path], reason: str) -> None:
-        self.outcomes.append(Outcome(name, INCOMPLETE, [Path(p) for p in paths], reason))
+    def incomplete(self, name: str, paths: Iterable[Path], reason: str, written: Any = None,
+                   noted: str | None = None) -> None:
+        self.outcomes.append(Outcome(name, INCOMPLETE, [Path(p) for p in paths], reason, written, noted))
 
     def failed(self, name: str, error: BaseException | str) -> None:
         message = error if isinstance(error, str) else f"{type(error).__name__}: {error}"
@@ -240,6 +246,21 @@ def _summaries(path: Path) -> tuple[list[str] | None, str]:
         log.warning("report: no summary of %s: %s", path.name, exc)
         return None, f"summary unavailable: {exc}"
     return (found[0][1] if found else None), ""
+
+
+def _result_summary(o: Outcome) -> dict[str, tuple[list[str] | None, str]]:
+    """file name -> (summary lines, why none) of the result the analysis's run handed back."""
+    if o.written is None or o.written.result is None:
+        return {}
+    from .summary import summarize_written
+
+    try:
+        found = summarize_written(o.written, o.noted if o.status == INCOMPLETE else None)
+    except Exception as exc:  # noqa: BLE001 - a summary must never hide the rest of the report
+        log.warning("report: no summary of %s: %s", o.name, exc)
+        stem = next((p.name for p in o.paths if p.suffix == ".h5"), "")
+        return {stem: (None, f"summary unavailable: {exc}")}
+    return {name: (lines, "") for name, lines, _ in found}
 
 
 def png_data_uri(path: Path) -> tuple[str, int, int]:
@@ -384,9 +405,10 @@ def _analysis(k: int, o: Outcome, figure_no: list[int]) -> str:
              f"<span class=\"st {_cls(o.status)}\">{e(o.status)}</span></h2>"]
     if o.message:
         parts.append(f"<p class=\"note {_cls(o.status)}\">{e(o.message)}</p>")
+    from_result = _result_summary(o)
     for p in o.paths:
         if p.suffix == ".h5":
-            lines, why = _summaries(p)
+            lines, why = from_result[p.name] if p.name in from_result else _summaries(p)
             parts.append(f"<h3>Key results <span class=\"file\">{e(p.name)}</span></h3>")
             parts.append(_summary_block(lines) if lines else f"<p>{e(why or 'no summary for this file')}</p>")
     for p in o.paths:

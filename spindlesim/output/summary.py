@@ -70,6 +70,26 @@ def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
     return out
 
 
+def summarize_written(written, reason: str | None = None) -> list[tuple[str, list[str], dict[str, Any]]]:
+    """(file name, lines, data) of what a run handed back (``runs.status.Written``): its analysis's summary of its
+    result, under the name of the analysis's file; ``reason``: the run stopped early (an INCOMPLETE line first)."""
+    from ..registry import analysis
+
+    if written.result is None:  # TRANSITION: a run that hands back its paths only: read the files
+        found = summarize(list(written.paths))
+        return found
+    fn = summary_of(written.analysis)
+    if fn is None:
+        return []
+    lines, data = fn(written.result)
+    if reason is not None:
+        lines.insert(0, f"INCOMPLETE: {reason}" if reason else "INCOMPLETE")
+        data["complete"] = False
+    stem = analysis(written.analysis).stem
+    name = next((p.name for p in written.paths if p.stem == stem and p.suffix == ".h5"), f"{stem}.h5")
+    return [(name, lines, data)]
+
+
 def scalar(x) -> float:
     return float(np.asarray(x))
 

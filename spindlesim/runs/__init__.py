@@ -24,6 +24,7 @@ from ..deck.loader import ANALYSES, LoadedDeck
 from ..output import drawing
 from ..output.hdf5 import RunInfo
 from .common import RunContext
+from .status import Written
 from ..registry import analysis, default_rows, file_writers
 
 log = logging.getLogger(__name__)
@@ -46,7 +47,16 @@ def run_info_for(loaded: "LoadedDeck | RunContext", command_line: str | None = N
 def run_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str | Path,
                  options: dict[str, Any] | None = None, progress: Progress = None,
                  run: RunInfo | None = None) -> list[Path]:
-    """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths.
+    """Run analysis ``name`` and write its outputs into ``outdir``; returns the written paths
+    (:func:`perform_analysis` returns the result too)."""
+    return list(perform_analysis(name, loaded, outdir, options, progress, run).paths)
+
+
+def perform_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str | Path,
+                     options: dict[str, Any] | None = None, progress: Progress = None,
+                     run: RunInfo | None = None) -> Written:
+    """Run analysis ``name``, write its outputs into ``outdir``; returns :class:`~.status.Written`: the
+    analysis's frozen result and the written paths.
 
     ``loaded``: a loaded deck (its analysis solves what it needs), or a :class:`~.common.RunContext` of it
     shared by several calls (``spindlesim run``: one shaft assembly, each operating point solved once).
@@ -57,20 +67,24 @@ def run_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str | Pat
     loaded = context_of(loaded)
     if name not in RUNS:
         raise KeyError(f"unknown analysis {name!r}; known: {', '.join(RUNS)}")
-    module, function = RUNS[analysis_for(name, loaded.deck)]
+    ran = analysis(analysis_for(name, loaded.deck)).name
+    module, function = RUNS[ran]
     fn = getattr(importlib.import_module(f"{__name__}.{module}"), function)
     status = importlib.import_module(f"{__name__}.status")
     status.remove_stale_temporaries(outdir)  # a killed run's *.tmp
     try:
-        paths = fn(loaded, Path(outdir), run or run_info_for(loaded), options or {}, progress)
-    except status.IncompleteRun:  # its files, figures included, are written: marked incomplete
+        written = fn(loaded, Path(outdir), run or run_info_for(loaded), options or {}, progress)
+    except status.IncompleteRun as exc:  # its files, figures included, are written: marked incomplete
+        exc.analysis = ran
         drawing.wait()
         raise
     except BaseException:
         drawing.abandon()
         raise
     drawing.wait()
-    return paths
+    if not isinstance(written, Written):  # TRANSITION: a run that returns its paths only
+        written = Written(None, tuple(Path(p) for p in written))
+    return Written(written.result, tuple(written.paths), ran)
 
 
 #: what ``spindlesim run`` does when the deck has no ``analyses`` list: every analysis the deck has the

@@ -15,8 +15,9 @@ import logging
 import os
 import re
 import time
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterable
+from typing import Any, Iterable
 
 log = logging.getLogger(__name__)
 
@@ -24,14 +25,35 @@ log = logging.getLogger(__name__)
 _INTERRUPT_REASON = re.compile(r"^\s*interrupted by the user", re.IGNORECASE)
 
 
-class IncompleteRun(Exception):
-    """A run that wrote (some of) its files but did not finish; raised after writing them."""
+@dataclass(frozen=True)
+class Written:
+    """What a run hands back: its analysis's frozen result (what the terminal summary, the report's section, the
+    verdicts and a sweep's case read) and the files it wrote from it.  ``analysis``: the registered analysis that
+    ran (``perform_analysis`` fills it in: the ``thermal`` command runs ``spindle_thermal`` on a spindle deck)."""
 
-    def __init__(self, reason: str, paths: Iterable[Path] = (), interrupted: bool = False):
+    result: Any
+    paths: tuple[Path, ...]
+    analysis: str = ""
+
+
+class IncompleteRun(Exception):
+    """A run that wrote (some of) its files but did not finish; raised after writing them.  ``result``: what was
+    computed before it stopped (the analysis's result, partial), or None; ``noted``: the reason its files carry
+    (``incomplete_reason``; default ``reason``), which its summary repeats."""
+
+    def __init__(self, reason: str, paths: Iterable[Path] = (), interrupted: bool = False, result: Any = None,
+                 noted: str | None = None):
         super().__init__(reason)
         self.reason = reason
+        self.noted = reason if noted is None else noted
         self.paths = [Path(p) for p in paths]
         self.interrupted = interrupted
+        self.result = result
+        self.analysis = ""
+
+    @property
+    def written(self) -> Written:
+        return Written(self.result, tuple(self.paths), self.analysis)
 
 
 def is_interrupt(result) -> bool:

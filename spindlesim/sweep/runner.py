@@ -104,7 +104,7 @@ def run_case(case: Case, case_dir: str) -> dict[str, Any]:
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     os.environ.setdefault("MPLBACKEND", "Agg")
     from ..deck import DeckError, parse_deck
-    from ..runs import run_analysis, run_info_for
+    from ..runs import perform_analysis, run_info_for
     from .summary import case_results
 
     out = Path(case_dir)
@@ -117,7 +117,8 @@ def run_case(case: Case, case_dir: str) -> dict[str, Any]:
         (out / "deck.yaml").write_text(case.deck_text)
         loaded = parse_deck(case.deck_text, str(out / "deck.yaml"))
         run = run_info_for(loaded, f"spindlesim sweep case {case.key}")
-        paths = _without_plots(run_analysis(case.analysis, loaded, out, case.options, run=run), case.options)
+        done = perform_analysis(case.analysis, loaded, out, case.options, run=run)
+        paths = _without_plots(list(done.paths), case.options)
         bad = incomplete_files(paths)
         if bad:  # a run that wrote incomplete files without raising IncompleteRun
             record.update(status=INCOMPLETE, files=_relative(paths, out),

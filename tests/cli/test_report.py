@@ -110,14 +110,14 @@ def test_an_interrupted_run_still_writes_its_report(tmp_path, monkeypatch):
     """Ctrl-C during an analysis: exit 130, the report lists what finished, what was interrupted, what not run."""
     import spindlesim.runs
 
-    real = spindlesim.runs.run_analysis
+    real = spindlesim.runs.perform_analysis
 
-    def run_analysis(name, *args, **kwargs):
+    def perform_analysis(name, *args, **kwargs):
         if name == "modal":
             raise KeyboardInterrupt
         return real(name, *args, **kwargs)
 
-    monkeypatch.setattr(spindlesim.runs, "run_analysis", run_analysis)
+    monkeypatch.setattr(spindlesim.runs, "perform_analysis", perform_analysis)
     res = CliRunner().invoke(main, ["run", str(_deck(tmp_path, "static, modal, frf")), "-o", str(tmp_path / "o")])
     assert res.exit_code == 130, res.output
     page = (tmp_path / "o" / "report.html").read_text()
