@@ -41,8 +41,10 @@ class Analysis:
     supported: bool = False
     #: other names a deck may list for the same analysis (the same run, file and summary)
     aliases: tuple[str, ...] = ()
-    #: ``module:function`` in spindlesim.output summarising its file ``<name>.h5`` on the terminal
+    #: ``module:function`` in spindlesim.output summarising its result on the terminal and in the report
     summary: str = ""
+    #: ``function`` in spindlesim.analysis.verdicts: its verdicts (``(result, operating range, name) -> [Verdict]``)
+    verdicts: str = ""
     #: a sweep's key results, most important first ("*" matches one path part)
     key_scalars: tuple[str, ...] = ()
     #: units of the derived scalars a sweep adds for it (sweep/summary.py)
@@ -88,6 +90,7 @@ ANALYSIS_REGISTRY: tuple[Analysis, ...] = (
     Analysis("spindle_thermal", "spindle_thermal:run", file="thermal",
              needs="a spindle_thermal section (a shaft on rolling bearings) and operating",
              runs_on=(("spindle_thermal", "operating"),), summary="thermal_summary:spindle_thermal",
+             verdicts="thermal_verdicts",
              key_scalars=("spindle_thermal@runaway_speed_rpm", "spindle_thermal/tool_tip_axial_drift_m*")),
     Analysis("thermal", "fluidfilm:run_thermal", needs=_FILM, runs_on=_FILM_ON,
              summary="bearing_summary:thermal",
@@ -111,7 +114,7 @@ ANALYSIS_REGISTRY: tuple[Analysis, ...] = (
              key_scalars=("modal/f1_hz", "modal/f2_hz", "modal/f3_hz", "modal/f4_hz", "modal/zeta1", "modal/zeta2"),
              derived_units=(("modal/f{k}_hz", "Hz"), ("modal/zeta{k}", "1"))),
     Analysis("campbell", "rotor:run_campbell", needs=_ROTOR, runs_on=_ROTOR_ON, supported=True,
-             summary="rotor_summary:campbell",
+             verdicts="campbell_verdicts", summary="rotor_summary:campbell",
              help="Campbell diagram with tracked modes and critical speeds.",
              key_scalars=("campbell/first_critical_rpm",), derived_units=(("campbell/first_critical_rpm", "rpm"),)),
     Analysis("frf", "rotor:run_frf", needs=_ROTOR, runs_on=_ROTOR_ON, supported=True,
@@ -127,7 +130,7 @@ ANALYSIS_REGISTRY: tuple[Analysis, ...] = (
     Analysis("transient", "transient:run", deck="transient", supported=True, aliases=("rotor_transient",),
              needs="a rotor, operating and a rotor_transient section; or a transient section",
              runs_on=(("rotor", "operating", "rotor_transient"), ("transient",)),
-             summary="summary:transient",
+             verdicts="transient_verdicts", summary="summary:transient",
              help="Time response of any rotor with its bearings' nonlinear reactions (run-up, whirl, roller pass).",
              key_scalars=("transient/dominant_amplitude_m", "transient/steady_amplitude_x_m",
                           "transient/steady_amplitude_y_m", "transient/dominant_frequency_hz"),
@@ -147,7 +150,7 @@ ANALYSIS_REGISTRY: tuple[Analysis, ...] = (
              derived_units=(("contact/edge_singular", "1"), ("contact/converged_max_pressure_Pa", "Pa"))),
     Analysis("chatter", "chatter:run", deck="milling_spindle", needs="a chatter section", supported=True,
              runs_on=(("chatter",),),
-             summary="summary:chatter",
+             verdicts="chatter_verdicts", summary="summary:chatter",
              help="Chatter stability lobes from the tool-point FRF (rotor at every speed, tap test or file)."),
     Analysis("tools", "tools:run", deck="tool_library", needs="a tools section", supported=True,
              runs_on=(("rotor", "operating", "tools"),), summary="tools_summary:tools",

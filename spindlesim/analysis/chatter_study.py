@@ -24,6 +24,8 @@ log = logging.getLogger(__name__)
 
 #: the lobes of the FRF at the deck speed, drawn for comparison, are solved at every this-many-th speed
 COMPARE_EVERY = 4
+#: what a study interrupted in the lobes has of them
+NO_LOBES = "not computed (interrupted)"
 
 
 @dataclass(frozen=True, eq=False)

@@ -158,6 +158,11 @@ class ToolLibraryStudy:
     #: where a Ctrl-C stopped the lobes ("": it did not): the receptances and the tools' lobes before it are kept
     interrupted: str = ""
 
+    @property
+    def lobes_frf(self) -> str:
+        """Which FRF the tools' lobes use (file and summary)."""
+        return f"the rotor with each tool at {self.library.speed_rpm:g} rpm, the same at every speed of the diagram"
+
 
 def tool_library_study(model: ToolLibraryModel, speed_rpm: float, frequency_hz, bearings: Sequence | None = None,
                        lobes_of: Sequence[tuple[str, object]] = (), spec=None, speed_limit_rpm: float | None = None,

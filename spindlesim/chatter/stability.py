@@ -77,6 +77,22 @@ class ChatterResult:
         return best_pocket(tuple(p for p in self.pockets if lim is None or p.speed_max_rpm <= lim))
 
     @property
+    def recommendation_text(self) -> str:
+        """What the recommendation is, or why there is none (the file's ``recommendation``, the summary's line)."""
+        from .pockets import MIN_GRID_SPEEDS, MIN_TOLERANCE, POCKET_LEVEL
+
+        lim = self.speed_limit_rpm
+        if not self.pockets:
+            return "none: no stability pocket inside the speed range"
+        if self.recommendation is None:  # every pocket runs above the spindle's thermal speed limit
+            return f"none: no stability pocket at or below the thermal speed limit ({lim:,.0f} rpm)"
+        below = "" if lim is None else f"; only pockets at or below the thermal speed limit ({lim:,.0f} rpm)"
+        return (f"the middle of the deepest stability pocket resolved by at least {MIN_GRID_SPEEDS} grid speeds (else "
+                f"the deepest); over the speed interval the limit stays at or above the depth, {POCKET_LEVEL:.0%} of "
+                f"the pocket's peak or less where needed for the interval to span +-{MIN_TOLERANCE:.0%} of the "
+                f"speed{below}")
+
+    @property
     def minimum(self) -> tuple[float, float] | None:
         """(speed [rpm], depth [m]) of the smallest limit depth at the speeds the spindle can run (all without a
         speed limit); None where no limit was found there."""

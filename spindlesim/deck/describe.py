@@ -38,3 +38,12 @@ def operating_text(deck) -> str:
     if temps:
         parts.append("oil inlet " + "/".join(f"{t:g}" for t in temps) + " degC")
     return ", ".join(parts)
+
+
+def operating_range(deck) -> tuple[float, float] | None:
+    """(operating speed, maximum continuous speed) [rpm] of a deck, None without an operating speed."""
+    op = getattr(deck, "operating", None)
+    if op is None or not op.speed_rpm:
+        return None
+    top = op.max_continuous_rpm if op.max_continuous_rpm is not None else op.speed_rpm
+    return float(op.speed_rpm), float(max(top, op.speed_rpm))

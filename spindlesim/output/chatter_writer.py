@@ -13,7 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from ..chatter.pockets import MIN_GRID_SPEEDS, MIN_TOLERANCE, POCKET_LEVEL
+from ..analysis.chatter_study import NO_LOBES
+from ..chatter.pockets import MIN_TOLERANCE, POCKET_LEVEL
 from ..chatter.results import speed_runs
 from .hdf5 import Data, RunInfo, labels, write_h5
 from .rotor_writers import tool_point_frf
@@ -78,7 +79,7 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
     """Datasets of every pocket and the attributes of the recommended one (the summary reads them)."""
     pk = result.pockets
     if not pk:
-        return {}, {"recommendation": "none: no stability pocket inside the speed range"}
+        return {}, {"recommendation": result.recommendation_text}
     g, d = "/chatter/pockets", ("pocket",)
     data = {f"{g}/peak_speed_rpm": (np.array([p.peak_speed_rpm for p in pk]), "rpm", d),
             f"{g}/peak_depth_m": Data(np.array([p.peak_depth_m for p in pk]), "m", d,
@@ -92,19 +93,12 @@ def _pockets(result) -> tuple[dict[str, Any], dict[str, Any]]:
             f"{g}/capped": (np.array([p.capped for p in pk], np.int8), "1", d)}
     r = result.recommendation
     if r is None:  # every pocket runs above the spindle's thermal speed limit
-        return data, {"recommendation": f"none: no stability pocket at or below the thermal speed limit "
-                                        f"({result.speed_limit_rpm:,.0f} rpm)"}
-    below = ("" if result.speed_limit_rpm is None else
-             f"; only pockets at or below the thermal speed limit ({result.speed_limit_rpm:,.0f} rpm)")
+        return data, {"recommendation": result.recommendation_text}
     attrs = {"recommended_speed_rpm": r.speed_rpm, "recommended_depth_m": r.depth_m,
              "recommended_speed_tolerance_rpm": r.tolerance_rpm, "pocket_speed_min_rpm": r.speed_min_rpm,
              "pocket_speed_max_rpm": r.speed_max_rpm, "pocket_peak_depth_m": r.peak_depth_m,
              "pocket_peak_speed_rpm": r.peak_speed_rpm, "pocket_level": r.level, "pocket_capped": r.capped,
-             "pocket_grid_speeds": r.grid_speeds,
-             "recommendation": (f"the middle of the deepest stability pocket resolved by at least {MIN_GRID_SPEEDS} "
-                                f"grid speeds (else the deepest); over the speed interval the limit stays at or above "
-                                f"the depth, {POCKET_LEVEL:.0%} of the pocket's peak or less where needed for the "
-                                f"interval to span +-{MIN_TOLERANCE:.0%} of the speed{below}")}
+             "pocket_grid_speeds": r.grid_speeds, "recommendation": result.recommendation_text}
     return data, attrs
 
 
@@ -187,7 +181,7 @@ def write_chatter_tool_point(path: Path, run: RunInfo, spec, series, shown, info
     if series.speed_dependent:
         data.update(_frf_per_speed(series, np.asarray(spec.speeds_rpm, float)))
     attrs: dict[str, dict[str, Any]] = {"/chatter": {
-        "process": spec.process.describe(), "lobes": "not computed (interrupted)",
+        "process": spec.process.describe(), "lobes": NO_LOBES,
         "frf_source": info["frf_source"], "frf_at_each_speed": bool(info.get("frf_at_each_speed", False))}}
     for key in ("node", "model", "deck_speed_rpm", "frf_at_each_speed_reason"):
         if key in info:

@@ -4,8 +4,9 @@ In order: the deck's title and the run's status; the provenance (version, deck f
 times, command line, platform, read from the HDF5 files' root attributes); every analysis with
 its status and files; the failures (the run goes on after one) with their messages; the warnings
 logged during the run and the deck's plausibility warnings; then one section per analysis with
-its key results (the summaries the terminal prints, :func:`~.summary.summarize`, read back from
-the files: nothing is recomputed here) and its figures with captions; last the deck text
+its key results (the summaries the terminal prints, of the results the runs handed back,
+:func:`~.summary.summarize_written`; a study another command wrote beside the run, calibration.h5 or
+optimize/, from its file: nothing is recomputed here) and its figures with captions; last the deck text
 (collapsed on screen, printed in full).
 
 Figures are embedded as PNG data URIs, the style sheet is inline (output/report_style.py) and
@@ -335,10 +336,12 @@ def _provenance(report: RunReport, outcomes: list[Outcome], ok: bool, status: st
 
 
 def _verdicts(report: RunReport, outcomes: list[Outcome]):
-    from .verdicts import operating_range, verdicts
+    """The verdicts of the results the runs handed back (analysis.verdicts), filed under each outcome's name."""
+    from ..analysis.verdicts import verdicts_of
+    from ..deck.describe import operating_range
 
-    where = {p.stem: o.name for o in outcomes for p in o.paths}
-    return verdicts([p for o in outcomes for p in o.paths], where, operating_range(report.loaded.deck))
+    return verdicts_of([(o.name, o.written.analysis, o.written.result) for o in outcomes if o.written is not None],
+                       operating_range(report.loaded.deck))
 
 
 def _verdict_table(found, outcomes: list[Outcome]) -> str:

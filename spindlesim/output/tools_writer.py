@@ -67,6 +67,5 @@ def write_tools(path: Path, run: RunInfo, study) -> Path:
                                 ("recommended_depth_m", "m", "depth the pocket keeps over its speed interval")):
             data[f"{lg}/{key}"] = Data(np.array([getattr(x, key) for x in lb], float), unit, ("tool",), what,
                                        fill_nan=True)
-        attrs[lg] = {"method": lb[0].method, "frf": f"the rotor with each tool at {lib.speed_rpm:g} rpm, the same "
-                                                   "at every speed of the diagram"}
+        attrs[lg] = {"method": lb[0].method, "frf": study.lobes_frf}
     return write_h5(path, run, data, attrs)

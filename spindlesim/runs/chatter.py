@@ -19,7 +19,7 @@ from typing import Any
 log = logging.getLogger(__name__)
 
 
-def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
+def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None):
     from ..analysis.chatter_study import chatter_study
     from ..chatter import build_chatter
     from ..deck import deck_folder, require_rotor, require_section
@@ -38,7 +38,9 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
                        bool(opts.get("exact")), tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ()),
                        None if limit is None else limit[0], progress, bool(opts.get("map")))
     if not st.interrupted:
-        return _write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)
+        from .status import Written
+
+        return Written(st, tuple(_write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)))
     import dataclasses  # Ctrl-C: what was computed is written, marked incomplete (exit 130)
 
     from .status import IncompleteRun
@@ -48,7 +50,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         paths = _write(outdir, run_info, st.spec, st.result, st.at_deck, st.shown_tool, st.info)
     else:
         paths = _write_tool_point(outdir, run_info, st)
-    raise IncompleteRun(f"chatter: {st.interrupted}", paths, interrupted=True)
+    raise IncompleteRun(f"chatter: {st.interrupted}", paths, interrupted=True, result=st, noted=st.interrupted)
 
 
 def _write_tool_point(outdir, run_info, st) -> list[Path]:

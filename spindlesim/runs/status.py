@@ -34,6 +34,9 @@ class Written:
     result: Any
     paths: tuple[Path, ...]
     analysis: str = ""
+    #: files of another analysis's kind the run wrote too, each summarised as that analysis summarises its own:
+    #: (file name, analysis, its result); e.g. a transient's contact pressure of a DTRB's most loaded roller
+    also: tuple[tuple[str, str, Any], ...] = ()
 
 
 class IncompleteRun(Exception):
@@ -51,9 +54,12 @@ class IncompleteRun(Exception):
         self.result = result
         self.analysis = ""
 
+    #: files of another analysis's kind written too (as ``Written.also``)
+    also: tuple = ()
+
     @property
     def written(self) -> Written:
-        return Written(self.result, tuple(self.paths), self.analysis)
+        return Written(self.result, tuple(self.paths), self.analysis, self.also)
 
 
 def is_interrupt(result) -> bool:

@@ -54,7 +54,7 @@ def study(loaded: Any, options: dict | None = None, progress=None):
                               lobes_of, spec, None if limit is None else limit[0], progress)
 
 
-def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
+def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None):
     from ..output.drawing import draw
     from ..output.tools_plots import receptance_figure, lobes_figure
     from ..output.tools_writer import write_tools
@@ -73,5 +73,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     if res.interrupted:
         from .status import IncompleteRun
 
-        raise IncompleteRun(f"tools: {res.interrupted}", paths, interrupted=True)
-    return paths
+        raise IncompleteRun(f"tools: {res.interrupted}", paths, interrupted=True, result=res, noted=res.interrupted)
+    from .status import Written
+
+    return Written(res, tuple(paths))

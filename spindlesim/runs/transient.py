@@ -21,7 +21,7 @@ import numpy as np
 from ..deck.loader import require_rotor
 from ..deck.describe import bearing_entries, operating_text
 from .common import first, operating_points, plots_wanted
-from .status import IncompleteRun, is_interrupt
+from .status import IncompleteRun, Written, is_interrupt
 
 log = logging.getLogger(__name__)
 RPM = math.pi / 30.0
@@ -94,11 +94,10 @@ def rotor_setup(deck: Any, opts: dict):
     return rotor, settings
 
 
-def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = None) -> list[Path]:
+def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = None) -> Written:
     from ..analysis.modal import solve_modal
     from ..analysis.transient.engine import simulate
-    from ..output import transient_plots as tp
-    from ..output.drawing import draw
+    from ..analysis.transient.result import TransientStudy
     from ..output.transient_writer import write_transient
 
     d = loaded.deck
@@ -123,26 +122,39 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
         modal_hz = None
     paths = [write_transient(outdir / "transient.h5", run_info, res, modal_hz, extra_attrs=thermal_attrs)]
     if plots_wanted(opts):
-        op = operating_text(d)
-        shown = tp.for_figures(res)  # what a figure process is sent: no rotor DOFs, no bearing forces
-        figs = [("transient_time.png", tp.time_figure, (shown, op)),
-                ("transient_orbit.png", tp.orbit_figure, (shown, op)),
-                ("transient_spectrum.png", tp.spectrum_figure, (shown, modal_hz, op)),
-                ("transient_poincare.png", tp.poincare_figure, (shown, op))]
-        if settings.speed_rpm is not None:
-            figs.append(("transient_run_up.png", tp.run_up_figure, (shown, None, op)))
-        for b, outs in enumerate(shown.bearing_outputs):
-            for name in outs:
-                figs.append((f"transient_{res.bearing_names[b]}_{name}.png", tp.bearing_output_figure,
-                             (shown, b, name, op)))
-        paths += [draw(outdir / name, figure, *args) for name, figure, args in figs]
-    if res.complete:
-        return paths + _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
-    interrupted = is_interrupt(res)
+        paths += _figures(outdir, res, modal_hz, settings.speed_rpm is not None, operating_text(d))
+    study = TransientStudy(res, modal_hz, thermal_attrs.get("thermal_equilibrium_rpm"))
+    interrupted = not res.complete and is_interrupt(res)
+    also: tuple = ()
     if not interrupted:  # the static roller pressure does not depend on the time history
-        paths += _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
+        more, also = _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts)
+        paths += more
+    if res.complete:
+        return Written(study, tuple(paths), also=also)
     log.info("transient run incomplete (%s); wrote what was computed", res.reason)
-    raise IncompleteRun(f"transient run incomplete: {res.reason}", paths, interrupted=interrupted)
+    exc = IncompleteRun(f"transient run incomplete: {res.reason}", paths, interrupted=interrupted, result=study,
+                        noted=res.reason)
+    exc.also = also
+    raise exc
+
+
+def _figures(outdir: Path, res, modal_hz, run_up: bool, op: str) -> list[Path]:
+    """The run's figures: time, orbit, spectrum, Poincare, the run-up, each bearing's outputs."""
+    from ..output import transient_plots as tp
+    from ..output.drawing import draw
+
+    shown = tp.for_figures(res)  # what a figure process is sent: no rotor DOFs, no bearing forces
+    figs = [("transient_time.png", tp.time_figure, (shown, op)),
+            ("transient_orbit.png", tp.orbit_figure, (shown, op)),
+            ("transient_spectrum.png", tp.spectrum_figure, (shown, modal_hz, op)),
+            ("transient_poincare.png", tp.poincare_figure, (shown, op))]
+    if run_up:
+        figs.append(("transient_run_up.png", tp.run_up_figure, (shown, None, op)))
+    for b, outs in enumerate(shown.bearing_outputs):
+        for name in outs:
+            figs.append((f"transient_{res.bearing_names[b]}_{name}.png", tp.bearing_output_figure,
+                         (shown, b, name, op)))
+    return [draw(outdir / name, figure, *args) for name, figure, args in figs]
 
 
 def _at_thermal_equilibrium(loaded, rotor, settings):
@@ -161,11 +173,12 @@ def _at_thermal_equilibrium(loaded, rotor, settings):
     return warm, {"thermal_equilibrium_rpm": rpm}
 
 
-def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:
-    """Contact pressure of the most loaded roller of each DTRB at the static state (seed 001 eqs. 42-46)."""
+def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> tuple[list[Path], tuple]:
+    """Contact pressure of the most loaded roller of each DTRB at the static state (seed 001 eqs. 42-46): the paths
+    written and, for the summary, (file name, "contact", the contact result) of each."""
     entries = [e for _, e in bearing_entries(loaded.deck, "dtrb")]
     if not entries:
-        return []
+        return [], ()
     from ..bearings.dtrb.roller_pressure import roller_pressure_under
     from ..contact.plots import pressure_map_figure, roller_profile_figure
     from ..output.figures import save_figure
@@ -173,6 +186,7 @@ def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:
 
     st = operating_points(loaded).state(rotor.speed_rpm)  # the run's shared static state
     paths: list[Path] = []
+    also = []
     for e in entries:
         b = next(b for b in st.bearings if b.name == e.name)
         rp = roller_pressure_under(b, st.load_of(b.name), st.speed_rad_s)
@@ -180,9 +194,10 @@ def _dtrb_roller_pressure(loaded, rotor, outdir, run_info, opts) -> list[Path]:
         paths.append(write_contact(outdir / f"{stem}.h5", run_info, rp.contact, {
             "source": f"most loaded roller of DTRB {e.name!r} at the rotor's static equilibrium",
             "row": rp.row + 1, "roller": rp.roller + 1, "tilt_rad": rp.tilt_rad}))
+        also.append((f"{stem}.h5", "contact", rp.contact))
         if plots_wanted(opts):
             paths.append(save_figure(pressure_map_figure(
                 rp.contact, f"Most loaded roller of {e.name!r} (row {rp.row + 1}), Q = {rp.roller_load_N:.0f} N"),
                 outdir / f"{stem}_pressure.png"))
             paths.append(save_figure(roller_profile_figure(rp.contact), outdir / f"{stem}_roller.png"))
-    return paths
+    return paths, tuple(also)

@@ -81,12 +81,14 @@ def _without_plots(paths: list, options: dict) -> list:
     return keep
 
 
-def case_verdicts(paths, deck) -> list[dict[str, str]]:
-    """The verdicts a case's files hold (``output.verdicts``), as JSON: topic, text, status."""
-    from ..output.verdicts import operating_range, verdicts
+def case_verdicts(done, deck) -> list[dict[str, str]]:
+    """The verdicts of a case's result (``analysis.verdicts``; ``done`` what its run handed back), as JSON: topic,
+    text, status."""
+    from ..analysis.verdicts import verdicts_of
+    from ..deck.describe import operating_range
 
     return [{"topic": v.topic, "text": v.text, "status": v.status}
-            for v in verdicts(paths, operating=operating_range(deck))]
+            for v in verdicts_of([(done.analysis, done.analysis, done.result)], operating_range(deck))]
 
 
 def verdict_word(record: dict[str, Any]) -> str:
@@ -126,7 +128,7 @@ def run_case(case: Case, case_dir: str) -> dict[str, Any]:
         else:
             scalars, units = case_results(paths)
             record.update(status=DONE, files=_relative(paths, out), scalars=scalars, units=units,
-                          verdicts=case_verdicts(paths, loaded.deck))
+                          verdicts=case_verdicts(done, loaded.deck))
     except IncompleteRun as exc:
         record.update(status=INTERRUPTED if exc.interrupted else INCOMPLETE, error=exc.reason,
                       files=_relative(exc.paths, out))

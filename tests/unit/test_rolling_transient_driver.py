@@ -172,7 +172,8 @@ def test_undecayed_free_whirl_is_not_settled_and_the_outputs_say_so(tmp_path):
     import h5py
 
     from spindlesim.output.hdf5 import RunInfo
-    from spindlesim.output.summary import summarize
+    from spindlesim.analysis.transient.result import TransientStudy
+    from spindlesim.output.summary import transient
     from spindlesim.output.transient_plots import orbit_figure, poincare_figure, spectrum_figure, time_figure
     from spindlesim.output.transient_writer import write_transient
     from tests.cli.test_transient_cli import _texts
@@ -200,7 +201,7 @@ def test_undecayed_free_whirl_is_not_settled_and_the_outputs_say_so(tmp_path):
         assert a["frequency_resolution_hz"] == pytest.approx(a["sample_rate_hz"] / n)
         assert a["steady_duration_s"] == pytest.approx(n / a["sample_rate_hz"])
         assert a["unresolved_frequencies"] == "revolution" and a["ringing_mode_hz"] == pytest.approx(50.0)
-    (_, lines, data), = summarize([path])
+    lines, data = transient(TransientStudy(res))  # the summary reads the result, not the file
     text = "\n".join(lines)
     assert "NOT SETTLED: the free vibration" in text and short in text
     assert "(NOT SETTLED: not a steady amplitude)" in lines[0] and "has NOT SETTLED" in text

@@ -1,18 +1,22 @@
-"""Issue 35, item 4: a verdict at the top.  The verdicts read from a run's files (API 684 margins, stability, the
+"""Issue 35, item 4: a verdict at the top.  The verdicts of a run's results (API 684 margins, stability, the
 thermal speed limit against the operating speed, the stable depth, a transient's steadiness) open report.html,
-the banner names the ones not met, and a sweep's table carries each case's."""
+the banner names the ones not met, and a sweep's table carries each case's.  Issue 34, item 1: they are computed
+from the results the runs hand back, never read back from the files."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from click.testing import CliRunner
+import shutil
 
-from spindlesim.cli import main
+import numpy as np
+
+from spindlesim.analysis.verdicts import BAD, OK, verdicts_of
 from spindlesim.deck import parse_deck
+from spindlesim.deck.describe import operating_range
 from spindlesim.output.report import RunReport, render
-from spindlesim.output.verdicts import BAD, OK, operating_range, verdicts
-from spindlesim.runs import run_info_for
+from spindlesim.runs import perform_analysis, run_info_for
+from spindlesim.runs.common import RunContext
 from spindlesim.sweep.runner import verdict_word
 
 ROOT = Path(__file__).parents[2]
@@ -31,12 +35,14 @@ def _hot_deck(tmp_path) -> Path:
 def test_the_thermal_limit_below_the_operating_speed_is_not_met_and_opens_the_report(tmp_path):
     deck = _hot_deck(tmp_path)
     out = tmp_path / "o"
-    for cmd in (["thermal"], ["campbell", "--speeds", "0:24000:13"]):
-        res = CliRunner().invoke(main, [*cmd, str(deck), "-o", str(out), "-q"])
-        assert res.exit_code == 0, res.output
     loaded = parse_deck(deck.read_text(), str(deck))
-    paths = [out / "thermal.h5", out / "campbell.h5"]
-    found = verdicts(paths, operating=operating_range(loaded.deck))
+    ctx = RunContext(loaded)
+    thermal = perform_analysis("thermal", ctx, out, {"plots": False})
+    campbell = perform_analysis("campbell", ctx, out, {"plots": False, "speeds_rpm": np.linspace(0, 24000, 13)})
+    assert thermal.analysis == "spindle_thermal" and campbell.analysis == "campbell"
+    shutil.rmtree(out)  # the verdicts are the results', not the files'
+    found = verdicts_of([("thermal", thermal.analysis, thermal.result), ("campbell", "campbell", campbell.result)],
+                        operating_range(loaded.deck))
     thermal = [v for v in found if v.topic == "Thermal speed limit"]
     assert len(thermal) == 1 and thermal[0].status == BAD
     assert "18,000 rpm is above it" in thermal[0].text and "12,500" in thermal[0].text
@@ -44,8 +50,8 @@ def test_the_thermal_limit_below_the_operating_speed_is_not_met_and_opens_the_re
     api = [v for v in found if v.topic == "API 684 separation margins"]
     assert len(api) == 1 and api[0].status in (OK, BAD)
     report = RunReport(loaded, run_info_for(loaded), out, ["thermal", "campbell"])
-    report.done("thermal", [out / "thermal.h5"])
-    report.done("campbell", [out / "campbell.h5"])
+    report.done("thermal", [], thermal)
+    report.done("campbell", [], campbell)
     page = render(report)
     assert page.index('id="verdicts"') < page.index('id="provenance"')
     assert "NOT MET: Thermal speed limit" in page

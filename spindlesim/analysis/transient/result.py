@@ -1,4 +1,6 @@
-"""What a transient method returns (``Trajectory``) and what the engine returns (``TransientResult``)."""
+"""What a transient method returns (``Trajectory``), what the engine returns (``TransientResult``) and what the
+``transient`` analysis hands back (``TransientStudy``: the engine's result with the linear modes at the static state
+and the thermal state it ran at)."""
 
 from __future__ import annotations
 
@@ -89,3 +91,14 @@ class TransientResult:
             if p.name == name:
                 return p
         raise KeyError(name)
+
+
+@dataclass(frozen=True)
+class TransientStudy:
+    """The ``transient`` analysis's result: the run in time, the linear natural frequencies at the static state it
+    starts from (None when they could not be computed) and, on a spindle at its thermal equilibrium, that
+    equilibrium's speed (None otherwise)."""
+
+    result: TransientResult
+    linearized_hz: np.ndarray | None = None
+    thermal_equilibrium_rpm: float | None = None
