@@ -34,3 +34,43 @@ def disk_entry(node: int, rho: float, od: float, bore: float, width: float) -> t
     Ip = m * (ro**2 + ri**2) / 2
     Id = Ip / 2 + m * width**2 / 12
     return f"  - {{node: {node}, mass_kg: {m!r}, Ip_kg_m2: {Ip!r}, Id_kg_m2: {Id!r}}}\n", m, Ip, Id
+
+
+def cli_with_result(monkeypatch, args: list[str], exit_code: int = 0):
+    """Run the CLI with ``args`` and return (its printed output, what the run handed back: runs.status.Written, of
+    an incomplete run too), the run's result caught on its way to the summary (``spindlesim.runs.perform_analysis``
+    stays wrapped for the rest of the test)."""
+    from click.testing import CliRunner
+
+    import spindlesim.runs as runs
+    from spindlesim.cli import main
+    from spindlesim.runs.status import IncompleteRun
+
+    caught = []
+    perform = runs.perform_analysis
+
+    def catching(*a, **kw):
+        try:
+            caught.append(perform(*a, **kw))
+        except IncompleteRun as exc:
+            caught.append(exc.written)
+            raise
+        return caught[-1]
+
+    monkeypatch.setattr(runs, "perform_analysis", catching)
+    res = CliRunner().invoke(main, [str(a) for a in args])
+    assert res.exit_code == exit_code, res.output
+    written = caught[-1]
+    return res.output, written
+
+
+def printed_summary(output: str, file_name: str) -> list[str]:
+    """The summary lines the CLI printed under ``file_name:`` (indented by two spaces), up to the next blank line."""
+    lines = output.splitlines()
+    start = lines.index(f"{file_name}:") + 1
+    out = []
+    for ln in lines[start:]:
+        if not ln.startswith("  "):
+            break
+        out.append(ln[2:])
+    return out

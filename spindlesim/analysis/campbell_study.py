@@ -23,8 +23,9 @@ from .results import CampbellResult
 class CampbellStudy:
     """The diagram (``hot``: at the operating points, the thermal equilibrium where the points have one), the
     frozen comparison (``frozen``, its speed ``frozen_rpm``), the cold spindle and the bearings' radial stiffness
-    at both (``cold``, ``stiffness``: speed_rpm, bearing names, "thermal" and "cold" [speed, bearing] N/m), and
-    what the thermal comparison is ("at thermal equilibrium" or an instant of a warm-up)."""
+    at both (``cold``, ``stiffness``: speed_rpm, bearing names, "thermal" and "cold" [speed, bearing] N/m),
+    what the thermal comparison is ("at thermal equilibrium" or an instant of a warm-up), and the spindle's
+    operating speed (``operating_rpm``; None without a positive one), which the diagram is read against."""
 
     hot: CampbellResult
     frozen: CampbellResult | None = None
@@ -32,6 +33,7 @@ class CampbellStudy:
     cold: CampbellResult | None = None
     stiffness: dict | None = None
     thermal_label: str = ""
+    operating_rpm: float | None = None
 
     @property
     def incomplete_reason(self) -> str:
@@ -66,9 +68,11 @@ def bearing_stiffness(hot: OperatingPoints, cold: OperatingPoints, speeds) -> di
 
 def campbell_study(points: OperatingPoints, speeds_rpm: Sequence[float], n_modes: int = 8,
                    frozen_rpm: float | None = None, orders=(1.0,), operating: tuple[float, float] | None = None,
-                   exact: bool = False, progress: Callable[[int, int], None] | None = None) -> CampbellStudy:
+                   exact: bool = False, progress: Callable[[int, int], None] | None = None,
+                   operating_rpm: float | None = None) -> CampbellStudy:
     """The module note's diagram and comparisons; ``orders`` the excitation orders checked for crossings,
-    ``operating`` the (minimum operating, maximum continuous) speed of API 684's margins."""
+    ``operating`` the (minimum operating, maximum continuous) speed of API 684's margins, ``operating_rpm`` the
+    spindle's operating speed (kept in the study; not positive: none)."""
     opts = dict(n_modes=n_modes, orders=orders, operating=operating, exact=exact)
     res = solve_campbell(points, np.asarray(speeds_rpm, float), progress=progress, **opts)
     frozen = cold = stiffness = None
@@ -92,4 +96,5 @@ def campbell_study(points: OperatingPoints, speeds_rpm: Sequence[float], n_modes
         res = dataclasses.replace(res, interrupted=True, incomplete_reason=(
             "interrupted by the user in the comparison diagrams (frozen bearings, cold spindle): the diagram "
             "itself is complete, the comparisons not written"))
-    return CampbellStudy(res, frozen, frozen_rpm, cold, stiffness, label)
+    op = float(operating_rpm) if operating_rpm is not None and operating_rpm > 0 else None
+    return CampbellStudy(res, frozen, frozen_rpm, cold, stiffness, label, op)

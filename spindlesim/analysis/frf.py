@@ -35,11 +35,13 @@ def receptance(sysm: SystemMatrices, out_index: int, in_index: int, omega: np.nd
 
 
 def solve_frf(rotor: "Rotor | OperatingPoints", frequencies_hz: np.ndarray, input_node: int, input_dof: str,
-              output_node: int, output_dof: str, speed_rpm: float | None = None, refine: bool = False) -> FrfResult:
+              output_node: int, output_dof: str, speed_rpm: float | None = None, refine: bool = False,
+              tool_point: bool = False) -> FrfResult:
     """Receptance between (1-based) input and output node/DOF at the rotor speed, and the static
     compliance K^-1 there.  With ``refine`` the frequency grid gets points around every mode whose
     half-power band reaches into it (:func:`.resonance.frequency_refinement`), so that no peak falls
-    between two points; ``added`` marks them."""
+    between two points; ``added`` marks them.  With ``tool_point`` and a rotor with a tool, also the tool
+    tip's 2 x 2 receptance on the same grid (``tool_point``: what a chatter analysis at that speed uses)."""
     points = OperatingPoints.of(rotor)
     r = points.rotor
     speed = r.speed_rpm if speed_rpm is None else speed_rpm
@@ -53,9 +55,14 @@ def solve_frf(rotor: "Rotor | OperatingPoints", frequencies_hz: np.ndarray, inpu
         f, added = frequency_refinement(f, modes.undamped_frequency_hz, modes.damping_ratio)
         log.info("FRF grid: %d points added around %d modes in range", int(added.sum()), len(modes.frequency_hz))
     h = receptance(sysm, i_out, i_in, 2 * np.pi * f)
+    tool = None
+    if tool_point and r.tool_tip is not None:
+        from .tool_point import tool_point_model
+
+        tool = tool_point_model(points, speed).frf(f)
     return FrfResult(frequency_hz=f, receptance_m_N=h, input_node=input_node, input_dof=input_dof,
                      output_node=output_node, output_dof=output_dof, speed_rpm=speed, added=added, modes=modes,
-                     static_compliance_m_N=static_compliance(sysm.K, i_out, i_in))
+                     static_compliance_m_N=static_compliance(sysm.K, i_out, i_in), tool_point=tool)
 
 
 def modes_in_range(m, lo_hz: float, hi_hz: float, reach: float = 3.0) -> ModesInRange:

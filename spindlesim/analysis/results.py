@@ -3,10 +3,14 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .resonance import Crossings
+
+if TYPE_CHECKING:
+    from ..chatter.frf import ToolPointFrf
 
 
 @dataclass(frozen=True)
@@ -88,6 +92,9 @@ class FrfResult:
     added: np.ndarray | None = None  # bool per frequency: added around a mode (False: the user's grid)
     modes: "ModesInRange | None" = None  # the modes the grid was refined around
     static_compliance_m_N: float | None = None  # K^-1 [output, input] (0 Hz); None where K does not hold it
+    # the tool tip's 2 x 2 receptance (xx, xy; yx, yy) on the same grid (chatter.frf.ToolPointFrf), when asked
+    # for and the rotor has a tool
+    tool_point: "ToolPointFrf | None" = None
 
     @property
     def dynamic_stiffness_N_m(self) -> np.ndarray:
@@ -105,6 +112,11 @@ class UnbalanceResult:
     node_z_m: np.ndarray
     added: np.ndarray | None = None  # bool per speed: added around a resonance (False: the user's grid)
     resonances: "UnbalanceResonances | None" = None  # the 1x crossings the grid was refined around
+
+    @property
+    def amplitude(self) -> str:
+        """What |response_m| is: the single (0-peak) amplitude of the phasor q(t) = Re(q e^{j W t})."""
+        return "0-peak"
 
 
 @dataclass(frozen=True)

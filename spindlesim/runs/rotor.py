@@ -1,4 +1,7 @@
-"""The linear rotor analyses: static, modal, Campbell, FRF, unbalance (deck -> physics -> files)."""
+"""The linear rotor analyses: static, modal, Campbell, FRF, unbalance (deck -> physics -> files).
+
+Each run hands back :class:`~.status.Written`: the analysis's frozen result (what the terminal summary and the
+report read: output/rotor_summary.py) and the files written from it."""
 
 from __future__ import annotations
 
@@ -11,6 +14,7 @@ from ..deck.document import NodeDof
 from ..deck.loader import require_rotor, require_section
 from ..output.drawing import draw
 from .common import first, operating_points, plots_wanted, value_range
+from .status import IncompleteRun, Written
 
 log = logging.getLogger(__name__)
 
@@ -29,7 +33,7 @@ def run_static(loaded, outdir, run, opts, progress):
     paths = [write_static(outdir / "static.h5", run, res)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "static_deflection.png", static_figure, res))
-    return paths
+    return Written(res, tuple(paths))
 
 
 def run_modal(loaded, outdir, run, opts, progress):
@@ -50,7 +54,7 @@ def run_modal(loaded, outdir, run, opts, progress):
             at.setdefault(float(rotor.node_z_m[b.node]), b.name)
         bearings = tuple((name, z) for z, name in at.items())
         paths.append(draw(outdir / "modal_shapes.png", modes_figure, res, bearings=bearings))
-    return paths
+    return Written(res, tuple(paths))
 
 
 def run_campbell(loaded, outdir, run, opts, progress):
@@ -64,12 +68,12 @@ def run_campbell(loaded, outdir, run, opts, progress):
     speeds = value_range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
     st = campbell_study(operating_points(loaded), speeds, first(opts.get("modes"), d.campbell.modes),
                         d.campbell.compare_frozen_rpm, excitation_orders(d), d.operating.speed_range_rpm,
-                        bool(opts.get("exact")), progress)
+                        bool(opts.get("exact")), progress, operating_rpm=d.operating.speed_rpm)
     res = st.hot
     if st.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
         run = dataclasses.replace(run, complete=False, incomplete_reason=st.incomplete_reason)
     paths = [write_campbell(outdir / "campbell.h5", run, res, st.frozen, st.frozen_rpm, st.cold, st.stiffness,
-                            operating_rpm=d.operating.speed_rpm)]
+                            operating_rpm=st.operating_rpm)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None,
                           teeth=cutter_teeth(d), speed_limit_rpm=_limit(loaded)))
@@ -78,11 +82,10 @@ def run_campbell(loaded, outdir, run, opts, progress):
         if st.cold is not None:
             paths.append(draw(outdir / "campbell_thermal.png", campbell_thermal_figure, res, st.cold, st.stiffness,
                               st.thermal_label))
-    if st.incomplete_reason:
-        from .status import IncompleteRun
-
-        raise IncompleteRun(st.incomplete_reason, paths, interrupted=st.interrupted)
-    return paths
+    if st.incomplete_reason:  # the partial study, as its file notes it
+        raise IncompleteRun(st.incomplete_reason, paths, interrupted=st.interrupted, result=st,
+                            noted=run.incomplete_reason)
+    return Written(st, tuple(paths))
 
 
 def _limit(loaded) -> float | None:
@@ -119,12 +122,9 @@ def run_frf(loaded, outdir, run, opts, progress):
     tip = rotor.tool_tip + 1 if rotor.tool_tip is not None else 1
     inp, out = fr.input or NodeDof(node=tip, dof="x"), fr.output or NodeDof(node=tip, dof="x")
     f = value_range(fr.frequencies_hz)
-    res = solve_frf(points, f, inp.node, inp.dof, out.node, out.dof, speed_rpm=speed, refine=True)
-    tool = None
-    if rotor.tool_tip is not None:  # the tool point's 2 x 2 receptance (xx, xy; yx, yy), on the refined grid
-        from ..analysis.tool_point import tool_point_model
-
-        tool = tool_point_model(points, speed).frf(res.frequency_hz)
+    # with the tool point's 2 x 2 receptance (xx, xy; yx, yy) on the refined grid, where the rotor has a tool
+    res = solve_frf(points, f, inp.node, inp.dof, out.node, out.dof, speed_rpm=speed, refine=True, tool_point=True)
+    tool = res.tool_point
     paths = [write_frf(outdir / "frf.h5", run, res, tool)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "frf_magnitude_phase.png", frf_magnitude_phase_figure, res))
@@ -134,7 +134,7 @@ def run_frf(loaded, outdir, run, opts, progress):
 
             paths.append(draw(outdir / "frf_tool_point.png", frf_figure, tool, terms=("xx", "yy", "xy"),
                               title=f"Tool point (node {tip}) at {speed:g} rpm"))
-    return paths
+    return Written(res, tuple(paths))
 
 
 def run_unbalance(loaded, outdir, run, opts, progress):
@@ -150,4 +150,4 @@ def run_unbalance(loaded, outdir, run, opts, progress):
     paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "unbalance.png", unbalance_figure, res, speed_limit_rpm=_limit(loaded)))
-    return paths
+    return Written(res, tuple(paths))

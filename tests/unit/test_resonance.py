@@ -26,8 +26,8 @@ from spindlesim.analysis.campbell import solve_campbell
 from spindlesim.analysis.frf import solve_frf, solve_unbalance
 from spindlesim.analysis.resonance import required_separation_margin
 from spindlesim.cli import main
-from spindlesim.output.summary import summarize
-from tests.rotor_helpers import deck_text, isotropic_bearing, rotor_from, uniform_rows
+from spindlesim.output.summary import summary_of
+from tests.rotor_helpers import cli_with_result, deck_text, isotropic_bearing, rotor_from, uniform_rows
 
 L, D, KB, MD = 0.2, 0.1, 2e5, 20.0  # shaft length and diameter [m], bearing stiffness [N/m], disk mass [kg]
 E, G, NU, RHO = 211e9, 81.2e9, 0.3, 7810.0  # tests.rotor_helpers.uniform_rows' material
@@ -121,16 +121,15 @@ def _deck(tmp_path, body, speed_rpm, extra=""):
     return p
 
 
-def test_unbalance_file_and_summary_state_the_amplitude_convention(tmp_path):
+def test_unbalance_file_and_summary_state_the_amplitude_convention(tmp_path, monkeypatch):
     zeta, U_g_mm = 0.01, 100.0
     extra = "unbalance:\n  node: 3\n  amount_g_mm: 100.0\n  output: {node: 3, dof: x}\n  speeds_rpm: {start: 200, " \
             "stop: 2000, count: 10}\n"
-    res = CliRunner().invoke(main, ["unbalance", str(_deck(tmp_path, _body(zeta), 0.0, extra)), "-o",
-                                    str(tmp_path / "out")])
-    assert res.exit_code == 0, res.output
-    assert "um 0-peak" in res.output and "peak-to-peak" in res.output
+    output, written = cli_with_result(monkeypatch, ["unbalance", _deck(tmp_path, _body(zeta), 0.0, extra), "-o",
+                                                    tmp_path / "out"])
+    assert "um 0-peak" in output and "peak-to-peak" in output
     path = tmp_path / "out" / "unbalance.h5"
-    (_, lines, s), = summarize([path])
+    lines, s = summary_of("unbalance")(written.result)
     peak = (U_g_mm * 1e-6 / MASS) / (2 * zeta * np.sqrt(1 - zeta**2))  # closed form: a single amplitude
     assert s["amplitude"] == "0-peak"
     assert s["peak_m"] == pytest.approx(peak, rel=0.01)
@@ -140,7 +139,7 @@ def test_unbalance_file_and_summary_state_the_amplitude_convention(tmp_path):
         assert f["unbalance/added"][:].sum() > 0
 
 
-def test_frf_reports_the_static_compliance_not_its_first_frequency(tmp_path):
+def test_frf_reports_the_static_compliance_not_its_first_frequency(tmp_path, monkeypatch):
     """K^-1 at the centre: the bearings in parallel plus the shaft as a simply supported Timoshenko
     beam under a central load; the grid starts at 2 Hz, where |H| is already 1.3 % above it."""
     I, A = np.pi * D**4 / 64, np.pi * D**2 / 4
@@ -151,10 +150,10 @@ def test_frf_reports_the_static_compliance_not_its_first_frequency(tmp_path):
     assert abs(r.receptance_m_N[0]) > 1.01 * static
     extra = "frf:\n  input: {node: 3, dof: x}\n  output: {node: 3, dof: x}\n  frequencies_hz: {start: 2, stop: 40, " \
             "count: 20}\n"
-    res = CliRunner().invoke(main, ["frf", str(_deck(tmp_path, _body(0.01), 0.0, extra)), "-o", str(tmp_path / "o")])
-    assert res.exit_code == 0, res.output
-    assert "static compliance (0 Hz, K^-1) 2.5" in res.output and "static-end" not in res.output
-    (_, _, s), = summarize([tmp_path / "o" / "frf.h5"])
+    output, written = cli_with_result(monkeypatch, ["frf", _deck(tmp_path, _body(0.01), 0.0, extra), "-o",
+                                                    tmp_path / "o"])
+    assert "static compliance (0 Hz, K^-1) 2.5" in output and "static-end" not in output
+    _, s = summary_of("frf")(written.result)
     assert s["static_compliance_m_N"] == pytest.approx(static, rel=1e-9)
 
 

@@ -59,43 +59,47 @@ def test_json_summary_is_machine_readable(tmp_path):
     assert "critical_speeds" in s and "stability_threshold" in s
 
 
-def _campbell_file(tmp_path):
-    _run(tmp_path, "campbell", "--speeds", "1000:6000:3", "--modes", "4", "--quiet")
-    return tmp_path / "campbell.h5"
+def _campbell_study(tmp_path, monkeypatch):
+    """The CampbellStudy the campbell command summarises (its result, caught on the way)."""
+    from tests.rotor_helpers import cli_with_result
+
+    _, written = cli_with_result(monkeypatch, ["campbell", "--speeds", "1000:6000:3", "--modes", "4", "--quiet",
+                                               "-o", tmp_path])
+    return written.result
 
 
-def test_campbell_summary_reads_the_file_not_the_deck(tmp_path, monkeypatch):
-    """The operating speed is campbell.h5's attribute: the summary parses no YAML (issue 24, item 3)."""
+def test_campbell_summary_reads_the_result_not_the_deck(tmp_path, monkeypatch):
+    """The operating speed is the study's (campbell.h5's attribute too): the summary parses no YAML (issue 24,
+    item 3) and reads no file (issue 34, item 1)."""
+    import shutil
     import sys
 
-    import h5py
-
     from spindlesim.deck import default_deck
-    from spindlesim.output.summary import summarize
+    from spindlesim.output.summary import summary_of
 
-    path = _campbell_file(tmp_path)
-    with h5py.File(path, "r+") as f:
-        del f.attrs["deck_text"]
+    study = _campbell_study(tmp_path / "o", monkeypatch)
+    shutil.rmtree(tmp_path / "o")
     monkeypatch.setitem(sys.modules, "yaml", None)  # importing yaml now fails
-    (_, lines, data), = summarize([path])
+    lines, data = summary_of("campbell")(study)
     assert data["operating_speed_rpm"] == default_deck("spindle").deck.operating.speed_rpm > 0
 
 
-def test_campbell_summary_prints_the_analysis_stability_threshold(tmp_path):
-    """The threshold is the file's ``first_unstable`` (speed, mode indices), not recomputed from the damping."""
-    import h5py
+def test_campbell_summary_prints_the_analysis_stability_threshold(tmp_path, monkeypatch):
+    """The threshold is the result's ``first_unstable`` (speed, mode indices): the lowest speed with a negatively
+    damped tracked mode, as the analysis defines it."""
+    import dataclasses
 
-    from spindlesim.output.summary import summarize
+    from spindlesim.output.summary import summary_of
 
-    path = _campbell_file(tmp_path)
-    with h5py.File(path, "r+") as f:
-        g = f["campbell"]
-        assert bool(g.attrs["stable"]) and "first_unstable" not in g.attrs
-        assert (g["damping_ratio"][()] > 0).all()
-        g.attrs["stable"] = False
-        g.attrs["first_unstable"] = np.array([1, 2])
-        sp, fr = g["speed_rpm"][1], g["frequency_hz"][1, 2]
-    (_, lines, data), = summarize([path])
+    study = _campbell_study(tmp_path, monkeypatch)
+    hot = study.hot
+    assert hot.first_unstable is None and (hot.damping_ratio > 0).all()
+    z = hot.damping_ratio.copy()
+    z[1, 2] = -0.01
+    study = dataclasses.replace(study, hot=dataclasses.replace(hot, damping_ratio=z))
+    assert study.hot.first_unstable == (1, 2)
+    sp, fr = hot.speed_rpm[1], hot.frequency_hz[1, 2]
+    lines, data = summary_of("campbell")(study)
     assert data["stability_threshold"]["speed_rpm"] == sp and data["stability_threshold"]["mode"] == 3
     assert data["stability_threshold"]["frequency_hz"] == fr
     assert any(ln.strip().startswith(f"UNSTABLE from {sp:g} rpm: mode 3") for ln in lines)

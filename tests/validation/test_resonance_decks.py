@@ -6,30 +6,23 @@ from pathlib import Path
 import h5py
 import numpy as np
 import pytest
-from click.testing import CliRunner
 
 from spindlesim.analysis.modal import solve_modal
-from spindlesim.cli import main
 from spindlesim.deck import load_deck
 from spindlesim.model.build import build_rotor
-from spindlesim.output.summary import summarize
+from spindlesim.output.summary import summary_of
+from tests.rotor_helpers import cli_with_result
 
 DECKS = Path(__file__).resolve().parents[2] / "decks"
 
 
-def _run(tmp_path, *args):
-    r = CliRunner().invoke(main, [*args, "-o", str(tmp_path)])
-    assert r.exit_code == 0, r.output
-    return r.output
-
-
-def test_milling_spindle_axial_crossing_is_in_the_campbell_summary(tmp_path):
+def test_milling_spindle_axial_crossing_is_in_the_campbell_summary(tmp_path, monkeypatch):
     """The axial mode (zeta 1.15 % there since issue 30's bearing damping; 1e-5 before) crosses 1x near 22,100 rpm
     (issue 21: the summary said "no critical speed").  Independent check: the damped modes solved at the reported speed have the axial
     mode at N/60, and its damping gives the reported AF = 1/(2 zeta)."""
     deck = DECKS / "milling_spindle.yaml"
-    out = _run(tmp_path, "campbell", str(deck), "--speeds", "20000:24000:9")
-    (_, lines, s), = summarize([tmp_path / "campbell.h5"])
+    out, written = cli_with_result(monkeypatch, ["campbell", deck, "--speeds", "20000:24000:9", "-o", tmp_path])
+    lines, s = summary_of("campbell")(written.result)
     axial = [c for c in s["crossings"] if c["order"] == 1.0 and c["whirl"] == "axial"]
     assert len(axial) == 1
     c = axial[0]
@@ -48,13 +41,13 @@ def test_milling_spindle_axial_crossing_is_in_the_campbell_summary(tmp_path):
         np.testing.assert_array_equal(f["campbell/crossings"].attrs["orders"], [1.0, 2.0, 4.0])
 
 
-def test_seed001_frf_lists_every_mode_in_range(tmp_path):
+def test_seed001_frf_lists_every_mode_in_range(tmp_path, monkeypatch):
     """Seed 001 rotor, 9 x -> 5 x on the deck's 5 Hz grid: every damped mode in 10-3000 Hz is listed with
     its peak, and the peak of the lightly damped 220 Hz mode is resolved: there the receptance is
     (almost) imaginary, |Im H| >> |Re H|, as at any resonance of a single mode."""
     deck = DECKS / "seed001_dtrb_rotor.yaml"
-    _run(tmp_path, "frf", str(deck))
-    (_, lines, s), = summarize([tmp_path / "frf.h5"])
+    _, written = cli_with_result(monkeypatch, ["frf", deck, "-o", tmp_path])
+    lines, s = summary_of("frf")(written.result)
     m = solve_modal(build_rotor(load_deck(deck).deck), 3000.0, n_modes=12)
     in_range = m.frequency_hz[(m.frequency_hz >= 10) & (m.frequency_hz <= 3000)]
     listed = " ".join(lines)
