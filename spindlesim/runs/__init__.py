@@ -84,7 +84,7 @@ def perform_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str |
     drawing.wait()
     if not isinstance(written, Written):  # TRANSITION: a run that returns its paths only
         written = Written(None, tuple(Path(p) for p in written))
-    return Written(written.result, tuple(written.paths), ran)
+    return Written(written.result, tuple(written.paths), written.analysis or ran)  # bearing on a dtrb deck: dtrb
 
 
 #: what ``spindlesim run`` does when the deck has no ``analyses`` list: every analysis the deck has the
