@@ -55,7 +55,7 @@ def setting_of(model) -> ThermalSetting:
 
 
 def lubrication_label(model) -> str:
-    """"method, lubricant" of a ``SpindleThermalModel`` (thermal.h5's ``lubrication``)."""
+    """The lubrication of a ``SpindleThermalModel`` as "method, lubricant" (thermal.h5's ``lubrication``)."""
     return f"{model.lubrication.method}, {getattr(model.lubrication.lubricant, 'name', '')}"
 
 
@@ -103,7 +103,7 @@ def thermal_study(points, speeds_rpm: Sequence[float], warm_up=None,
     ``quiet``: the runaway that ends the list is logged as information, not as a warning (another analysis
     asking for the speed limit)."""
     thermal = points.thermal
-    setting = setting_of(thermal.model)
+    setting = setting_of(thermal.model) if thermal is not None else ThermalSetting()
     speeds = list(speeds_rpm)
     total = len(speeds) + (1 if warm_up is not None else 0)
     states: list[ThermalState] = []
