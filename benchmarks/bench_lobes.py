@@ -4,8 +4,11 @@ single-threaded BLAS).
 1. `spindlesim chatter decks/milling_spindle.yaml` against the stack floor (bench_process.py's): target 5x.
 2. `spindlesim tools` with the chatter section and ten tools (bench_taptest.py's deck) against one tool's
    `spindlesim chatter` of the same deck: target 3x.
-3. `spindlesim thermal decks/milling_spindle.yaml` (the warm-up's minimum depth still by the zero-order method,
-   docs/decisions.md says why), for the record of "no slower than today".
+3. `spindlesim thermal decks/milling_spindle.yaml` (the warm-up's stable depth at each instant's speed by the
+   chatter section's method, docs/decisions.md), for the record of "no slower than today".
+4. `spindlesim campbell decks/seed003_three_lobe.yaml --speeds 200:12000:60` (thermal equilibrium at every speed)
+   against the same on the paper's linear coefficients (decks/seed003_spindle_linear.yaml): target 1.5x.
+   Target 5 (in process) is benchmarks/bench_models.py.
 
 Also `spindlesim chatter --map` (the stability map asked for), for the record.
 
@@ -42,6 +45,10 @@ def main() -> None:
         ("chatter one tool", exe + ["chatter", str(ten), "-q", "-o"]),
         ("tools, 10 tools, lobes", exe + ["tools", str(ten), "-q", "-o"]),
         ("thermal milling", exe + ["thermal", str(MILL), "-q", "-o"]),
+        ("campbell 3-lobe, 60 speeds", exe + ["campbell", str(ROOT / "decks" / "seed003_three_lobe.yaml"), "--speeds",
+                                               "200:12000:60", "-q", "-o"]),
+        ("campbell linear, 60 speeds", exe + ["campbell", str(ROOT / "decks" / "seed003_spindle_linear.yaml"),
+                                              "--speeds", "200:12000:60", "-q", "-o"]),
     ]
     got = {}
     print(f"{'command':30s} {'median s':>9s} {'min':>7s} {'max':>7s} {'cpu s':>7s}", flush=True)
@@ -61,6 +68,7 @@ def main() -> None:
 
     ratio("chatter milling", "stack floor", 5.0, "1. chatter milling / stack floor")
     ratio("tools, 10 tools, lobes", "chatter one tool", 3.0, "2. tools (10, lobes) / one tool's chatter")
+    ratio("campbell 3-lobe, 60 speeds", "campbell linear, 60 speeds", 1.5, "4. campbell 3-lobe / linear")
 
 
 if __name__ == "__main__":

@@ -38,10 +38,32 @@ class WarmUp:
 
 
 @dataclass(frozen=True)
+class ThermalSetting:
+    """What the model of a study sets and its summary names: the ambient temperature [degC], the lubrication
+    ("method, lubricant"), the motor's load fraction and the ball-bearing sets of the model, in its order."""
+
+    ambient_C: float = float("nan")
+    lubrication: str = ""
+    motor_load_fraction: float = float("nan")
+    bearings: tuple[str, ...] = ()
+
+
+def setting_of(model) -> ThermalSetting:
+    """The :class:`ThermalSetting` of a ``SpindleThermalModel``."""
+    return ThermalSetting(model.layout.ambient_C, lubrication_label(model), model.load_fraction,
+                          tuple(model.bearings))
+
+
+def lubrication_label(model) -> str:
+    """The lubrication of a ``SpindleThermalModel`` as "method, lubricant" (thermal.h5's ``lubrication``)."""
+    return f"{model.lubrication.method}, {getattr(model.lubrication.lubricant, 'name', '')}"
+
+
+@dataclass(frozen=True)
 class ThermalStudy:
     """The equilibria at ascending speeds, the runaway that ended the list ((rpm, message) or None), the speed
-    limit (highest stable, lowest running away) [rpm], the warm-up, the parts not computed, and where a Ctrl-C
-    stopped the study ("" : it was not)."""
+    limit (highest stable, lowest running away) [rpm], the warm-up, the parts not computed, where a Ctrl-C
+    stopped the study ("" : it was not), and what the model set (``setting``)."""
 
     states: tuple[ThermalState, ...]
     runaway: tuple[float, str] | None = None
@@ -49,6 +71,7 @@ class ThermalStudy:
     warm_up: WarmUp | None = None
     missing: tuple[str, ...] = ()
     interrupted: str = ""
+    setting: ThermalSetting = ThermalSetting()
 
     # ---- named results (the optimiser's, the report's) --------------------------------------------------
     @property
@@ -80,6 +103,7 @@ def thermal_study(points, speeds_rpm: Sequence[float], warm_up=None,
     ``quiet``: the runaway that ends the list is logged as information, not as a warning (another analysis
     asking for the speed limit)."""
     thermal = points.thermal
+    setting = setting_of(thermal.model) if thermal is not None else ThermalSetting()
     speeds = list(speeds_rpm)
     total = len(speeds) + (1 if warm_up is not None else 0)
     states: list[ThermalState] = []
@@ -109,8 +133,9 @@ def thermal_study(points, speeds_rpm: Sequence[float], warm_up=None,
                 progress(total, total)
     except KeyboardInterrupt:
         log.warning("thermal: interrupted by the user %s", where)
-        return ThermalStudy(tuple(states), runaway, limit, None, tuple(missing), f"interrupted by the user {where}")
-    return ThermalStudy(tuple(states), runaway, limit, warm, tuple(missing))
+        return ThermalStudy(tuple(states), runaway, limit, None, tuple(missing), f"interrupted by the user {where}",
+                            setting)
+    return ThermalStudy(tuple(states), runaway, limit, warm, tuple(missing), setting=setting)
 
 
 def _warm_up(points, w, depth_through, runaway, missing: list[str]):

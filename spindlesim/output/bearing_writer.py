@@ -14,29 +14,15 @@ Dimensions: string coordinates ``dof`` (x .. theta_y) and ``load`` (Fx .. My), `
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .hdf5 import DOF5_UNITS, LOAD5_UNITS, STIFFNESS5_UNITS, Data, RunInfo, five_dof, labels, write_h5
 
-
-@dataclass(frozen=True)
-class AtTemperature:
-    """What the deck's temperatures, fits and speed made of the bearing (evaluated by the run): its growth
-    at rest (clearance, groove offsets, fits), the radial growth of the inner ring from speed, each row's
-    groove-centre offset, each row's thrust without external load (None: a spring preload, which sets it
-    whatever the growth), the fits at speed, and the deck's temperatures [degC] by part."""
-
-    growth: Any
-    speed_growth_m: float
-    row_offsets_m: np.ndarray
-    preload_N: np.ndarray | None
-    inner_fit: Any
-    outer_fit: Any
-    temperatures_C: dict[str, float]
+if TYPE_CHECKING:
+    from ..bearings.ball.study import AtTemperature
 
 
 LIFE_NOTE = ("NaN where there is none: ISO 281 factors not tabulated for the contact angle, or no equivalent "
@@ -125,14 +111,13 @@ def _state_datasets(base: str, st) -> dict:
 def _growth_datasets(base: str, at: AtTemperature) -> tuple[dict, dict]:
     """What the bearing's temperatures and fits made of it (datasets and attributes of ``base``)."""
     gr = at.growth
-    grow = at.speed_growth_m
     data = {
         f"{base}/operating_clearance_m": Data(
-            np.array(gr.clearance_m - 2.0 * grow), "m", (),
+            np.array(at.operating_clearance_m), "m", (),
             "diametral clearance at the deck's temperatures, fits and speed (< 0: interference)"),
         f"{base}/operating_clearance_at_rest_m": Data(np.array(gr.clearance_m), "m", (),
                                                       "diametral clearance at the deck's temperatures and fits, at rest"),
-        f"{base}/clearance_change_m": Data(np.array(gr.clearance_change_m - 2.0 * grow), "m", (),
+        f"{base}/clearance_change_m": Data(np.array(at.clearance_change_m), "m", (),
                                            "operating clearance minus the clearance as made (deck value)"),
         f"{base}/preload_offset_m": Data(at.row_offsets_m, "m", ("row",),
                                          "axial groove-centre offset c_k of each row at temperature (position preload)"),
@@ -143,12 +128,11 @@ def _growth_datasets(base: str, at: AtTemperature) -> tuple[dict, dict]:
         data[f"{base}/preload_N"] = Data(np.asarray(at.preload_N, float), "N", ("row",), "thrust each row carries "
                                          "with no external load, at the deck's temperatures, fits and speed")
     fits = {}
-    for side, fit in (("inner", at.inner_fit), ("outer", at.outer_fit)):
-        if fit is not None:
-            data[f"{base}/{side}_fit_interference_m"] = Data(np.array(fit.interference_m), "m", (),
-                                                             "effective diametral interference (<= 0: fit lost)")
-            data[f"{base}/{side}_fit_pressure_Pa"] = Data(np.array(fit.pressure_Pa), "Pa", ())
-            fits[f"{side}_fit_lost"] = int(fit.lost)
+    for side, fit in at.fits():
+        data[f"{base}/{side}_fit_interference_m"] = Data(np.array(fit.interference_m), "m", (),
+                                                         "effective diametral interference (<= 0: fit lost)")
+        data[f"{base}/{side}_fit_pressure_Pa"] = Data(np.array(fit.pressure_Pa), "Pa", ())
+        fits[f"{side}_fit_lost"] = int(fit.lost)
     return data, fits
 
 

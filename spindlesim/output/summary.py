@@ -74,9 +74,8 @@ def summarize_written(written, reason: str | None = None) -> list[tuple[str, lis
     result, under the name of the analysis's file; ``reason``: the run stopped early (an INCOMPLETE line first)."""
     from ..registry import analysis
 
-    if written.result is None:  # TRANSITION: a run that hands back its paths only: read the files
-        found = summarize(list(written.paths))
-        return found
+    if written.result is None:  # an incomplete run that stopped before it had a result
+        return []
     out = []
     stem = analysis(written.analysis).stem
     name = next((p.name for p in written.paths if p.stem == stem and p.suffix == ".h5"), f"{stem}.h5")

@@ -139,6 +139,8 @@ def _common(g: str, states, bearings, nodes, sources, boundaries, axis: str) -> 
 
 def write_spindle_thermal(path: Path, run: RunInfo, model, study) -> Path:
     """``study``: an :class:`~spindlesim.analysis.thermal_study.ThermalStudy` of ``model``."""
+    from ..analysis.thermal_study import lubrication_label
+
     g = "/spindle_thermal"
     series, warm = study, study.warm_up
     all_states = tuple(series.states) + (tuple(warm.states) if warm is not None else ())
@@ -149,7 +151,7 @@ def write_spindle_thermal(path: Path, run: RunInfo, model, study) -> Path:
     boundaries = tuple(sorted({k for s in all_states for k in (s.removed_W or {})}))
     data: dict = {}
     attrs: dict = {g: {"ambient_C": model.layout.ambient_C, "reference_C": model.reference_C,
-                       "lubrication": f"{model.lubrication.method}, {getattr(model.lubrication.lubricant, 'name', '')}",
+                       "lubrication": lubrication_label(model),
                        "motor_load_fraction": model.load_fraction, "tolerance_K": model.tolerance_K}}
     if series.states:
         data[f"{g}/speed_rpm"] = (np.array([s.speed_rpm for s in series.states]), "rpm", ("speed_rpm",))

@@ -82,9 +82,10 @@ def perform_analysis(name: str, loaded: "LoadedDeck | RunContext", outdir: str |
         drawing.abandon()
         raise
     drawing.wait()
-    if not isinstance(written, Written):  # TRANSITION: a run that returns its paths only
-        written = Written(None, tuple(Path(p) for p in written))
-    return Written(written.result, tuple(written.paths), ran, written.also)
+    if not isinstance(written, Written):
+        raise TypeError(f"the run of {ran!r} returned {type(written).__name__}, not runs.status.Written")
+    # the analysis whose result it is (``bearing`` on a dtrb deck hands back the dtrb analysis's)
+    return Written(written.result, tuple(written.paths), written.analysis or ran, written.also)
 
 
 #: what ``spindlesim run`` does when the deck has no ``analyses`` list: every analysis the deck has the

@@ -1,7 +1,7 @@
 """The ``dtrb`` analysis: deck section -> equilibrium, stiffness, sweeps -> dtrb.h5 and PNGs.
 
 :func:`run_dtrb` follow ``spindlesim.runs`` (the RUNS table):
-``(loaded_deck, outdir, run_info, options, progress) -> list[Path]``.  ``options`` may
+``(loaded_deck, outdir, run_info, options, progress) -> Written`` (the study and its files).  ``options`` may
 override ``preload_um``, ``speed_rpm`` and ``sweeps`` (False skips the sweeps); None = deck.
 """
 
@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from ..bearings.dtrb.bearing import DtrbBearing
+from .status import Written
 
 log = logging.getLogger(__name__)
 
@@ -25,7 +26,8 @@ def _range(r) -> np.ndarray:
     return np.linspace(r.start, r.stop, r.count)
 
 
-def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, progress=None) -> list[Path]:
+def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, progress=None) -> Written:
+    """The deck's ``dtrb`` section: its :class:`~spindlesim.bearings.dtrb.study.DtrbStudy`, dtrb.h5 and PNGs."""
     from ..bearings.dtrb.plots import plot_load_distribution, plot_stiffness_sweep
     from ..bearings.dtrb.section import at_deck_temperatures, geometry_from, material_body
     from ..bearings.dtrb.study import dtrb_study
@@ -57,7 +59,7 @@ def run_dtrb(loaded: Any, outdir: Path, run: Any, options: dict | None = None, p
         paths.append(draw(outdir / "dtrb_stiffness_radial.png", plot_stiffness_sweep,
                           st.sweeps["radial_sweep"], [(0, 0, "KXX")], 1e-3, "radial load FX [kN]",
                           f"KXX against radial load (delta0 = {st.preload_m * 1e6:g} um; seed 001 Fig. 10)"))
-    return paths
+    return Written(st, tuple(paths))
 
 
 def _load_text(load: np.ndarray) -> str:

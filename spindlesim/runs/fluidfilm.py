@@ -1,15 +1,15 @@
 """The ``thermal`` (of the fluid-film bearings) and ``coefficients`` analyses: deck -> fluid-film bearings -> HDF5 + PNG.
 
 Signatures follow ``spindlesim.runs`` (the RUNS table):
-``(loaded_deck, outdir, run_info, options, progress) -> list[Path]``; ``options`` may set
-``speed_rpm`` (None = the deck's ``operating.speed_rpm``).
+``(loaded_deck, outdir, run_info, options, progress) -> Written``: the bearings' thermal equilibria
+(:class:`~spindlesim.bearings.fluidfilm.results.FilmBearings`, what the summaries read) and the files;
+``options`` may set ``speed_rpm`` (None = the deck's ``operating.speed_rpm``).
 
 The layouts of thermal.h5 and coefficients.h5: :mod:`spindlesim.output.fluidfilm_writer`.
 """
 
 from __future__ import annotations
 
-import logging
 import math
 from pathlib import Path
 from typing import Any
@@ -17,8 +17,7 @@ from typing import Any
 import numpy as np
 
 from ..deck.describe import FLUID_FILM_TYPES, bearing_entries
-
-log = logging.getLogger(__name__)
+from .status import Written
 
 
 def _fluid_bearings(loaded: Any):
@@ -64,52 +63,40 @@ def _speed_rad_s(loaded: Any, options: dict) -> float:
 
 
 def _analyze_all(loaded, options, progress):
+    """The deck's fluid-film bearings and their :class:`~spindlesim.bearings.fluidfilm.results.FilmBearings`."""
+    from ..bearings.fluidfilm.study import film_bearings
+
     bearings = _fluid_bearings(loaded)
     om = _speed_rad_s(loaded, options)
-    loads = _static_loads(loaded, bearings, om)
-    out = []
-    for i, b in enumerate(bearings):
-        res = b.analyze(om, loads[b.name])
-        f = res.film
-        log.info("%s: mean film %.2f degC, mu %.4g Pa s, S %.4g, e/Cb %.4f, attitude %.1f deg",
-                 b.name, res.temperature_mean_C, f.viscosity_Pa_s, f.sommerfeld,
-                 f.eccentricity_ratio, f.attitude_angle_deg)
-        from ..bearings.fluidfilm.viscosity import OIL_MAX_C
-
-        if res.temperature_mean_C > OIL_MAX_C:
-            log.warning("bearing %r: mean film temperature %.0f C at %.0f rpm is above %.0f C, beyond a mineral "
-                        "oil's usable range: more oil flow, a lighter grade or more cooling",
-                        b.name, res.temperature_mean_C, om * 30 / math.pi, OIL_MAX_C)
-        out.append((b, res))
-        if progress is not None:
-            progress(i + 1, len(bearings))
-    return out, om
+    return bearings, film_bearings(bearings, om, _static_loads(loaded, bearings, om), progress)
 
 
 def run_thermal(loaded: Any, outdir: Path, run: Any, options: dict | None = None,
-                progress: Any = None) -> list[Path]:
+                progress: Any = None) -> Written:
     """Thermal equilibrium of every fluid-film bearing; thermal.h5 and pressure PNGs."""
     from ..bearings.fluidfilm.plots import pressure_figure
     from ..output.drawing import draw
     from ..output.fluidfilm_writer import write_film_thermal
 
-    results, om = _analyze_all(loaded, options or {}, progress)
-    paths = [write_film_thermal(Path(outdir) / "thermal.h5", run, results, om)]
+    bearings, study = _analyze_all(loaded, options or {}, progress)
+    results = list(zip(bearings, study.results))
+    paths = [write_film_thermal(Path(outdir) / "thermal.h5", run, results, study.speed_rad_s)]
     for b, r in results:
         paths.append(draw(Path(outdir) / f"thermal_pressure_{b.name}.png", pressure_figure, r.film, f"{b.name}"))
-    return paths
+    return Written(study, tuple(paths))
 
 
 def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None = None,
-                     progress: Any = None) -> list[Path]:
+                     progress: Any = None) -> Written:
     """Eight coefficients at the thermal equilibrium; coefficients.h5 and characteristic charts."""
     from ..bearings.fluidfilm.performance import characteristic_curves
     from ..bearings.fluidfilm.plots import characteristics_figure
     from ..output.drawing import draw
     from ..output.fluidfilm_writer import write_coefficients
 
-    results, om = _analyze_all(loaded, options or {}, progress)
-    paths = [write_coefficients(Path(outdir) / "coefficients.h5", run, results, om)]
+    bearings, study = _analyze_all(loaded, options or {}, progress)
+    results = list(zip(bearings, study.results))
+    paths = [write_coefficients(Path(outdir) / "coefficients.h5", run, results, study.speed_rad_s)]
     for b, r in results:
         S0 = r.film.sommerfeld
         curves = characteristic_curves(b.geometry, S0 * np.logspace(-1.5, 1.5, 19),
@@ -117,4 +104,4 @@ def run_coefficients(loaded: Any, outdir: Path, run: Any, options: dict | None =
         paths.append(draw(Path(outdir) / f"coefficients_{b.name}.png", characteristics_figure, curves,
                           f"{b.name}: L/D {b.geometry.l_over_d:.3g}, mp {b.geometry.preload:.3g}; operating S = {S0:.3g}",
                           mark_S=S0))
-    return paths
+    return Written(study, tuple(paths))

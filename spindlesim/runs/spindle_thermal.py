@@ -10,7 +10,7 @@ limit of that arrangement, written into the file and the summary (not a failure 
 ``warm_up``: the same quantities through the speed steps in time from the cold spindle, with the first
 natural frequencies of the rotor at each instant and, with a ``chatter:`` section whose FRF comes from the
 rotor, the stable depth of cut at each instant's speed (``analysis.warm_up_chatter``): ``analysis.thermal_study`` computes it all,
-this run writes thermal.h5 (group /spindle_thermal) and draws the PNGs.
+this run writes thermal.h5 (group /spindle_thermal), draws the PNGs and hands back the study (its summary's input).
 """
 
 from __future__ import annotations
@@ -19,10 +19,14 @@ import logging
 from pathlib import Path
 from typing import Any
 
+from .status import Written
+
 log = logging.getLogger(__name__)
 
 
-def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> list[Path]:
+def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None) -> Written:
+    """The spindle's thermal study (:class:`~spindlesim.analysis.thermal_study.ThermalStudy`), thermal.h5 and its
+    figures; a part that failed or was interrupted: :class:`~.status.IncompleteRun` with the partial study."""
     import dataclasses
 
     from ..analysis.points import OperatingPoints
@@ -67,8 +71,9 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
         from .status import IncompleteRun
 
         what = res.interrupted or f"{len(res.missing)} part(s) not computed: {res.missing[0]}"
-        raise IncompleteRun(f"thermal: {what}", paths, interrupted=bool(res.interrupted))
-    return paths
+        raise IncompleteRun(f"thermal: {what}", paths, interrupted=bool(res.interrupted), result=res,
+                            noted=run_info.incomplete_reason)
+    return Written(res, tuple(paths))
 
 
 def _depth_through(loaded):

@@ -14,8 +14,9 @@ Clearance bases (see docs/theory.md):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -73,3 +74,38 @@ class ThermalResult:
     #: dg/dtheta at the equilibrium, g(theta) = balance temperature - trial temperature (negative; NaN when
     #: not measured): the first step of the next search from a neighbouring state
     balance_slope: float = field(default=float("nan"), compare=False)
+
+    #: the scalar quantities of the result and its film, as thermal.h5 names them
+    SCALARS: ClassVar[tuple[str, ...]] = ("temperature_mean_C", "temperature_out_C", "temperature_in_C", "ambient_C", "viscosity_Pa_s",
+               "sommerfeld", "sommerfeld_b", "eccentricity_ratio", "attitude_angle_deg", "min_film_m",
+               "friction_torque_Nm", "power_loss_W", "friction_coefficient", "oil_flow_m3_s", "inlet_flow_m3_s",
+               "side_flow_m3_s", "reynolds_number", "heat_generated_W", "heat_to_oil_W", "heat_to_housing_W")
+
+    def quantity(self, name: str) -> float:
+        """The scalar ``name`` (of :data:`SCALARS`), of the result or of its film."""
+        return float(getattr(self, name) if hasattr(self, name) else getattr(self.film, name))
+
+    def not_computed(self) -> tuple[str, ...]:
+        """The scalars an isoviscous film without the oil's density and specific heat does not have (no heat
+        balance: its temperatures, heat flows, Reynolds number are not finite); () for a thermal equilibrium."""
+        if not self.isoviscous:
+            return ()
+        return tuple(k for k in self.SCALARS if not np.isfinite(self.quantity(k)))
+
+
+@dataclass(frozen=True)
+class FilmBearings:
+    """What the ``thermal`` and ``coefficients`` analyses of a deck's fluid-film bearings compute: each bearing
+    (by name, in the deck's order) at its thermal equilibrium at one speed."""
+
+    speed_rad_s: float
+    names: tuple[str, ...]
+    results: tuple[ThermalResult, ...]
+
+    @property
+    def speed_rpm(self) -> float:
+        return self.speed_rad_s * 30.0 / math.pi
+
+    def by_name(self) -> list[tuple[str, ThermalResult]]:
+        """(name, result) in the order of the names (how an HDF5 file lists its groups)."""
+        return sorted(zip(self.names, self.results), key=lambda item: item[0])
