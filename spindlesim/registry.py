@@ -4,7 +4,7 @@ Every table the layers need is derived from :data:`ANALYSIS_REGISTRY` and :data:
 the names a deck may list (``deck.loader.ANALYSES``, ``SUPPORTED_ANALYSES``), the runs
 (``runs.RUNS``), what ``spindlesim run`` runs by default and in which order (``runs.DEFAULT_RUN``),
 the CLI's commands (``cli.COMMANDS``) and their embedded decks (``decks.DEFAULT_DECKS``), the
-terminal summaries (``output.summary.SUMMARIES``) and a sweep's key results, units and overlays
+terminal summaries of the results (``output.summary.SUMMARIES``), the verdicts (``analysis.verdicts``) and a sweep's key results, units and overlays
 (``sweep.summary.KEY_SCALARS``, ``DERIVED_UNITS``, ``OVERLAYS``).
 
 Only names and dotted paths live here, no import of spindlesim: the CLI reads the registry at
@@ -192,6 +192,11 @@ def file_summaries() -> dict[str, str]:
     commands' that write a file of their own."""
     return {**{a.name: a.summary for a in ANALYSIS_REGISTRY if a.summary},
             **{c.file or c.name: c.summary for c in TOOL_COMMANDS if c.summary}}
+
+
+def study_files() -> tuple[str, ...]:
+    """The stems of the files the commands that are not one analysis write and summarise (calibration, optimize)."""
+    return tuple(c.file or c.name for c in TOOL_COMMANDS if c.summary)
 
 
 def file_writers() -> dict[str, tuple[str, ...]]:

@@ -18,14 +18,15 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ..registry import file_summaries, file_writers
+from ..registry import file_summaries, study_files
 from .labels import frequency_label, readable_keys
 from .numbers import with_resolution
 
-#: analysis (or a command's file stem) -> "module:function" in spindlesim.output: the summary of its file
+#: analysis (or a study command's file stem) -> "module:function" in spindlesim.output: the summary of its result
+#: (of a study's file)
 SUMMARIES: dict[str, str] = file_summaries()
-#: file stem -> the analyses that write that file (several: each writes its own group, /<name>)
-WRITERS: dict[str, tuple[str, ...]] = file_writers()
+#: the stems of the files the study commands write (calibration, optimize): summarised from the file
+STUDY_FILES: tuple[str, ...] = study_files()
 
 
 def summary_of(name: str) -> Callable | None:
@@ -38,18 +39,13 @@ def summary_of(name: str) -> Callable | None:
 
 
 def has_summary(path: Path) -> bool:
-    """Whether the file ``path`` is one a summary reads (by its name)."""
-    return Path(path).suffix == ".h5" and any(n in SUMMARIES for n in WRITERS.get(Path(path).stem, (Path(path).stem,)))
-
-
-def _writer(f, stem: str) -> str:
-    """The analysis that wrote the open file ``f`` named ``<stem>.h5``: the one of its writers whose group it holds."""
-    names = WRITERS.get(stem, (stem,))
-    return next((n for n in names if n in f), names[0]) if len(names) > 1 else names[0]
+    """Whether the file ``path`` is a study command's file that :func:`summarize` reads (by its name)."""
+    return Path(path).suffix == ".h5" and Path(path).stem in STUDY_FILES
 
 
 def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
-    """(file name, lines, data) for every HDF5 file among ``paths`` that has a summary."""
+    """(file name, lines, data) of every study command's HDF5 file among ``paths`` (calibration.h5, optimize.h5:
+    ``run``'s report shows the ones an earlier command wrote beside the run; there is no result in memory)."""
     import h5py
 
     out = []
@@ -57,7 +53,7 @@ def summarize(paths: list[Path]) -> list[tuple[str, list[str], dict[str, Any]]]:
         if not has_summary(p):
             continue
         with h5py.File(p, "r") as f:
-            fn = summary_of(_writer(f, Path(p).stem))
+            fn = summary_of(Path(p).stem)
             if fn is None:
                 continue
             lines, data = fn(f)

@@ -126,14 +126,13 @@ def test_what_runs_by_default_is_stated_and_ruled_together():
 
 def test_the_spindles_thermal_model_is_an_analysis_of_its_own():
     """spindle_thermal has its own run, summary and key results, and writes the thermal command's file (issue 34,
-    item 3); the summary of thermal.h5 is the one of the analysis whose group the file holds."""
-    from spindlesim.output.summary import WRITERS, _writer
+    item 3); the summary of thermal.h5 is the one of the analysis that ran (issue 34, item 1: of its result)."""
+    from spindlesim.registry import file_writers
 
     a = registry.analysis("spindle_thermal")
     assert a.run == "spindle_thermal:run" and a.stem == "thermal" and a.key_scalars and a.runs_on
     assert registry.analysis("thermal").run == "fluidfilm:run_thermal"
     assert ("spindle_thermal", "operating") not in registry.analysis("thermal").runs_on
-    assert WRITERS["thermal"] == ("spindle_thermal", "thermal") and WRITERS["chatter"] == ("chatter",)
-    assert _writer({"spindle_thermal"}, "thermal") == "spindle_thermal" and _writer({"thermal"}, "thermal") == "thermal"
+    assert file_writers()["thermal"] == ("spindle_thermal", "thermal") and file_writers()["chatter"] == ("chatter",)
     assert summary_of("spindle_thermal") is not summary_of("thermal")
     assert not (ROOT / "runs" / "thermal.py").exists()  # no run that picks between the two

@@ -43,9 +43,9 @@ def test_the_thermal_limit_below_the_operating_speed_is_not_met_and_opens_the_re
     shutil.rmtree(out)  # the verdicts are the results', not the files'
     found = verdicts_of([("thermal", thermal.analysis, thermal.result), ("campbell", "campbell", campbell.result)],
                         operating_range(loaded.deck))
-    thermal = [v for v in found if v.topic == "Thermal speed limit"]
-    assert len(thermal) == 1 and thermal[0].status == BAD
-    assert "18,000 rpm is above it" in thermal[0].text and "12,500" in thermal[0].text
+    limit = [v for v in found if v.topic == "Thermal speed limit"]
+    assert len(limit) == 1 and limit[0].status == BAD
+    assert "18,000 rpm is above it" in limit[0].text and "12,500" in limit[0].text
     assert any(v.topic == "Stability over speed" and v.status == OK for v in found)
     api = [v for v in found if v.topic == "API 684 separation margins"]
     assert len(api) == 1 and api[0].status in (OK, BAD)
