@@ -1,7 +1,8 @@
 """Issue 34, item 1: the terminal summaries, the report's sections and its verdicts are built from the results the
 analyses return, not read back from the files.  Each command below runs with every HDF5 read refused (h5py.File in
-mode "r" raises): it must still print its summary, and ``run`` its report with the verdicts; the same commands
-with reading allowed print the same lines (nothing in a summary comes from the file)."""
+mode "r" raises): it must still print its summary, and ``run`` its report with the verdicts.  (That each summary
+prints what it printed when it read the file: tests/unit/test_rotor_summary.py,
+tests/unit/test_summaries_of_bearing_results.py and scripts/snapshot_outputs.py before and after.)"""
 
 from __future__ import annotations
 
@@ -22,10 +23,10 @@ PACKAGE = ROOT / "spindlesim"
 CASES = [
     ("static", "milling_spindle.yaml"), ("modal", "seed001_dtrb_rotor.yaml"), ("frf", "milling_spindle.yaml"),
     ("campbell", "seed003_spindle_linear.yaml", "--speeds", "1000:12000:4"),
-    ("unbalance", "seed003_spindle_linear.yaml"), ("coefficients", "seed003_three_lobe.yaml"),
+    ("unbalance", "seed003_spindle_linear.yaml"), ("thermal", "seed003_three_lobe.yaml"),
     ("bearing", "ball_single_row.yaml"), ("contact", "contact_roller.yaml"),
     ("transient", "seed000_roller_bearing.yaml", "--duration", "0.02"), ("tools", "tool_library.yaml", "--no-lobes"),
-    ("chatter", "small chatter"), ("thermal", "lathe_headstock.yaml"),
+    ("chatter", "small chatter"),
 ]
 
 
@@ -62,14 +63,12 @@ def _summary(output: str) -> list[str]:
 def test_the_summary_is_the_results_not_the_files(case, tmp_path, monkeypatch):
     cmd, deck, *opts = case
     argv = [cmd, str(_deck(deck, tmp_path)), *opts]
-    free = CliRunner().invoke(main, [*argv, "-o", str(tmp_path / "a")])
-    assert free.exit_code == 0, free.output
     _refuse_reading(monkeypatch)
     refused = CliRunner().invoke(main, [*argv, "-o", str(tmp_path / "b")])
     assert refused.exit_code == 0, refused.output
     summary = _summary(refused.output)
-    assert len(summary) >= 2 and summary[0].endswith(".h5:"), refused.output
-    assert summary == _summary(free.output)
+    assert len(summary) >= 2 and summary[0] == f"{cmd}.h5:", refused.output
+    assert (tmp_path / "b" / f"{cmd}.h5").is_file()
 
 
 def test_runs_report_and_verdicts_come_from_the_results(tmp_path, monkeypatch):
@@ -78,6 +77,7 @@ def test_runs_report_and_verdicts_come_from_the_results(tmp_path, monkeypatch):
     _refuse_reading(monkeypatch)
     text = (DECKS / "milling_spindle.yaml").read_text()
     deck = tmp_path / "m.yaml"
+    text = text.replace("  warm_up: {steps:", "  # warm_up: {steps:")  # the equilibria only
     deck.write_text(text.replace("title:", "analyses: [spindle_thermal, static, campbell]\ntitle:", 1))
     res = CliRunner().invoke(main, ["run", str(deck), "-o", str(tmp_path / "o"), "-q"])
     assert res.exit_code == 0, res.output
