@@ -29,18 +29,28 @@ def _small_thermal(tmp_path) -> Path:
     return p
 
 
-def _handed_back(cmd: str, deck: Path, out: Path):
-    """(written, reason) of the run of ``cmd`` on ``deck`` into ``out``, the folder deleted afterwards."""
-    from spindlesim.deck import load_deck
-    from spindlesim.runs import perform_analysis
+def _handed_back(monkeypatch, cmd: str, deck: Path, out: Path, exit_code: int = 0):
+    """(printed output, written, reason) of ``spindlesim cmd deck -o out``: what the run handed back caught on its
+    way to the summary, the folder deleted afterwards."""
+    import spindlesim.runs as runs
     from spindlesim.runs.status import IncompleteRun
 
-    try:
-        written, reason = perform_analysis(cmd, load_deck(deck), out), None
-    except IncompleteRun as exc:
-        written, reason = exc.written, exc.noted
+    caught = []
+    perform = runs.perform_analysis
+
+    def catching(*a, **kw):
+        try:
+            caught.append((perform(*a, **kw), None))
+        except IncompleteRun as exc:
+            caught.append((exc.written, exc.noted))
+            raise
+        return caught[-1][0]
+
+    monkeypatch.setattr(runs, "perform_analysis", catching)
+    res = CliRunner().invoke(main, [cmd, str(deck), "-o", str(out)])
+    assert res.exit_code == exit_code, res.output
     shutil.rmtree(out)
-    return written, reason
+    return (res.output, *caught[-1])
 
 
 def _summary_without_files(written, reason):
@@ -72,37 +82,32 @@ def _printed_block(name: str, lines: list[str]) -> str:
     ("thermal", "seed003_three_lobe.yaml", "thermal"),
     ("coefficients", "seed003_three_lobe.yaml", "coefficients"),
 ])
-def test_bearing_summaries_read_the_result_not_the_file(tmp_path, cmd, deck, analysis):
-    written, reason = _handed_back(cmd, DECKS / deck, tmp_path / "gone")
+def test_bearing_summaries_read_the_result_not_the_file(tmp_path, monkeypatch, cmd, deck, analysis):
+    printed, written, reason = _handed_back(monkeypatch, cmd, DECKS / deck, tmp_path / "gone")
     assert written.analysis == analysis and reason is None
     name, lines, data = _summary_without_files(written, reason)
     assert name == f"{analysis}.h5" and lines and data
-    res = CliRunner().invoke(main, [cmd, str(DECKS / deck), "-o", str(tmp_path / "cli")])
-    assert res.exit_code == 0, res.output
-    assert _printed_block(name, lines) in res.output
+    assert _printed_block(name, lines) in printed
 
 
-def test_isoviscous_film_summary_from_the_result(tmp_path):
+def test_isoviscous_film_summary_from_the_result(tmp_path, monkeypatch):
     """A film without the oil's density and specific heat: its temperatures are left out, and said so."""
     deck = DECKS / "validation" / "jeffcott_plain.yaml"
-    written, _ = _handed_back("thermal", deck, tmp_path / "gone")
+    printed, written, _ = _handed_back(monkeypatch, "thermal", deck, tmp_path / "gone")
     _, lines, data = _summary_without_files(written, None)
     assert any("isoviscous film, no heat balance" in ln for ln in lines)
     assert all("temperature_mean_C" not in row for row in data.values())
-    res = CliRunner().invoke(main, ["thermal", str(deck), "-o", str(tmp_path / "cli")])
-    assert _printed_block("thermal.h5", lines) in res.output
+    assert _printed_block("thermal.h5", lines) in printed
 
 
-def test_spindle_thermal_summary_reads_the_study_not_the_file(tmp_path):
+def test_spindle_thermal_summary_reads_the_study_not_the_file(tmp_path, monkeypatch):
     deck = _small_thermal(tmp_path)
-    written, reason = _handed_back("thermal", deck, tmp_path / "gone")
+    printed, written, reason = _handed_back(monkeypatch, "thermal", deck, tmp_path / "gone")
     assert written.analysis == "spindle_thermal" and reason is None
     name, lines, data = _summary_without_files(written, reason)
     assert lines[0].startswith("thermal equilibrium at 2 speed(s), ambient 20 C") and data["speed_rpm"] == [4000.0, 8000.0]
     assert any(ln.startswith("  warm-up over") for ln in lines)
-    res = CliRunner().invoke(main, ["thermal", str(deck), "-o", str(tmp_path / "cli")])
-    assert res.exit_code == 0, res.output
-    assert _printed_block(name, lines) in res.output
+    assert _printed_block(name, lines) in printed
 
 
 def test_interrupted_spindle_thermal_is_summarised_from_the_partial_study(tmp_path, monkeypatch):
@@ -114,11 +119,9 @@ def test_interrupted_spindle_thermal_is_summarised_from_the_partial_study(tmp_pa
 
     monkeypatch.setattr(SpindleThermal, "warm_up", stop)
     deck = _small_thermal(tmp_path)
-    written, reason = _handed_back("thermal", deck, tmp_path / "gone")
+    printed, written, reason = _handed_back(monkeypatch, "thermal", deck, tmp_path / "gone", exit_code=130)
     assert written.result.interrupted and written.result.warm_up is None
     assert reason == "interrupted by the user in the warm-up"
     name, lines, data = _summary_without_files(written, reason)
     assert lines[0] == f"INCOMPLETE: {reason}" and data["complete"] is False and data["speed_rpm"] == [4000.0, 8000.0]
-    res = CliRunner().invoke(main, ["thermal", str(deck), "-o", str(tmp_path / "cli")])
-    assert res.exit_code == 130, res.output
-    assert _printed_block(name, lines) in res.output
+    assert _printed_block(name, lines) in printed
