@@ -87,10 +87,6 @@ def summarize_written(written, reason: str | None = None) -> list[tuple[str, lis
     return out
 
 
-def scalar(x) -> float:
-    return float(np.asarray(x))
-
-
 def transient(study):
     """The run in time (``analysis.transient.result.TransientStudy``): its length, the vibration amplitude over the
     last half, whether it settled, the dominant spectral line, the Poincare set's periodicity."""

@@ -45,17 +45,15 @@ class IncompleteRun(Exception):
     (``incomplete_reason``; default ``reason``), which its summary repeats."""
 
     def __init__(self, reason: str, paths: Iterable[Path] = (), interrupted: bool = False, result: Any = None,
-                 noted: str | None = None):
+                 noted: str | None = None, also: tuple = ()):
         super().__init__(reason)
         self.reason = reason
         self.noted = reason if noted is None else noted
         self.paths = [Path(p) for p in paths]
         self.interrupted = interrupted
         self.result = result
+        self.also = tuple(also)  # files of another analysis's kind written too (as ``Written.also``)
         self.analysis = ""
-
-    #: files of another analysis's kind written too (as ``Written.also``)
-    also: tuple = ()
 
     @property
     def written(self) -> Written:

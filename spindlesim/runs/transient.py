@@ -132,10 +132,8 @@ def run(loaded: Any, outdir: Path, run_info: Any, opts: dict, progress: Any = No
     if res.complete:
         return Written(study, tuple(paths), also=also)
     log.info("transient run incomplete (%s); wrote what was computed", res.reason)
-    exc = IncompleteRun(f"transient run incomplete: {res.reason}", paths, interrupted=interrupted, result=study,
-                        noted=res.reason)
-    exc.also = also
-    raise exc
+    raise IncompleteRun(f"transient run incomplete: {res.reason}", paths, interrupted=interrupted, result=study,
+                        noted=res.reason, also=also)
 
 
 def _figures(outdir: Path, res, modal_hz, run_up: bool, op: str) -> list[Path]:
