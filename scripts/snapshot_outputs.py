@@ -6,6 +6,7 @@ compare the two JSON files (python scripts/snapshot_outputs.py OUT.json; then di
 from __future__ import annotations
 
 import json
+import os
 import sys
 import tempfile
 from pathlib import Path
@@ -23,7 +24,8 @@ RUNS = [
     ("coefficients", "seed003_three_lobe.yaml"), ("modal", "lathe_headstock.yaml"), ("thermal", "lathe_headstock.yaml"),
     ("bearing", "ball_single_row.yaml"), ("dtrb", "dtrb_wheel_hub.yaml"), ("contact", "contact_roller.yaml"),
     ("transient", "seed000_roller_bearing.yaml", "--duration", "0.05"), ("tools", "tool_library.yaml", "--no-lobes"),
-    ("chatter", "seed003_spindle_linear.yaml"), ("chatter", "milling_spindle.yaml"),
+    ("chatter", "seed003_spindle_linear.yaml"), ("chatter", "milling_spindle.yaml"), ("chatter", "seed003_three_lobe.yaml"),
+    ("chatter", "tool_library.yaml"),
     ("run", "milling_spindle.yaml"), ("run", "seed003_three_lobe.yaml"),
 ]
 
@@ -58,7 +60,10 @@ def snapshot() -> dict:
     from spindlesim.cli import main
 
     out: dict = {}
+    only = set(os.environ.get("SNAPSHOT_ONLY", "").split(",")) - {""}  # e.g. SNAPSHOT_ONLY=chatter,run
     for run in RUNS:
+        if only and run[0] not in only:
+            continue
         cmd, deck, *opts = run
         key = " ".join(run)
         with tempfile.TemporaryDirectory() as tmp:
@@ -85,8 +90,10 @@ def snapshot() -> dict:
                 data.pop("paths", None)
             except (ValueError, IndexError):
                 data = res.output
-            out[key] = {"exit": res.exit_code, "summary": text, "files": files, "report": report,
-                        "json": json.dumps(data, sort_keys=True, default=str)}
+            here = str(ROOT)  # the checkout's folder (a worktree's or another clone's): not a difference
+            out[key] = {"exit": res.exit_code, "summary": text.replace(here, "ROOT"), "files": files,
+                        "report": report.replace(here, "ROOT"),
+                        "json": json.dumps(data, sort_keys=True, default=str).replace(here, "ROOT")}
         print(f"{key}: exit {res.exit_code}", file=sys.stderr)
     return out
 

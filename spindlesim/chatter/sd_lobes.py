@@ -84,18 +84,35 @@ class _Grouped:
         """The largest multipliers [E, N_MULTIPLIERS] (largest first; NaN where a model has fewer)."""
         s_idx, depth = np.asarray(s_idx), np.asarray(depth, float)
         out = np.full((len(s_idx), N_MULTIPLIERS), np.nan, complex)
-        pieces = []  # each step count's speeds, shared among the worker threads
-        for g, prob in enumerate(self.problems):
-            idx = np.flatnonzero(self.group[s_idx] == g)
-            if len(idx):
-                pieces += [(prob, p) for p in np.array_split(idx, min(len(idx), workers()))]
+        pieces = self._pieces(s_idx)
         mults = SdProblem.batches((prob, self.local[s_idx[p]], depth[p]) for prob, p in pieces)
         for (_, p), mu in zip(pieces, mults):
             out[p, :mu.shape[1]] = mu
         return out
 
+    def _pieces(self, s_idx: np.ndarray) -> list:
+        """(problem, positions in ``s_idx``): each step count's speeds, shared among the workers."""
+        pieces = []
+        for g, prob in enumerate(self.problems):
+            idx = np.flatnonzero(self.group[s_idx] == g)
+            if len(idx):
+                pieces += [(prob, p) for p in np.array_split(idx, min(len(idx), workers()))]
+        return pieces
+
     def critical(self, s: int, depth: float):
-        return self.problems[self.group[s]].critical(int(self.local[s]), depth)
+        return self.criticals(np.array([s]), np.array([depth]))[0]
+
+    def criticals(self, s_idx, depth) -> list:
+        """The critical multipliers (:class:`~.semi_discretization.CriticalMultiplier`) at (speed, depth)
+        pairs, shared among the workers as :meth:`multipliers`."""
+        s_idx, depth = np.asarray(s_idx), np.asarray(depth, float)
+        out = [None] * len(s_idx)
+        pieces = self._pieces(s_idx)
+        got = SdProblem.batches(((prob, self.local[s_idx[p]], depth[p]) for prob, p in pieces), "criticals")
+        for (_, p), cms in zip(pieces, got):
+            for i, cm in zip(p, cms):
+                out[i] = cm
+        return out
 
 
 #: step counts are rounded up to this ladder (multiples of 10, about 15 % apart above 100), so that
@@ -289,8 +306,7 @@ def _solve(process, models, speeds, m_s, grid: _Depths, order, rtol, peak_check)
         mu_hi = np.where(on_grid[hit], last[hit, 1, 0], np.nan)
         out["limit"][hit], out["slope"][hit] = _itp(prob, hit, lo[hit], hi[hit], f_lo[hit], f_hi[hit], rtol,
                                                     M_lo, mu_hi)
-        for s in hit:
-            cm = prob.critical(int(s), float(out["limit"][s]))
+        for s, cm in zip(hit, prob.criticals(hit, out["limit"][hit])):
             out["freq"][s], out["kind"][s], out["lobe"][s] = cm.chatter_frequency_hz, cm.kind, cm.lobe
     return out
 

@@ -115,8 +115,10 @@ def dominant_modes(model: ToolPointModel, count: int, modal: _Modal | None = Non
 def _depth_curve(K0: np.ndarray, H: np.ndarray) -> np.ndarray:
     """Smallest zero-order depth per frequency, -1 / (2 min Re lambda), lambda the eigenvalues of
     -K0 H (inf where no branch has Re lambda < 0): the parametric lobes' depth, free of the speed."""
-    lam = np.linalg.eigvals(-np.einsum("ij,fjk->fik", K0, H))
-    re = lam.real.min(axis=1)
+    M = -np.einsum("ij,fjk->fik", K0, H)
+    half = 0.5 * (M[:, 0, 0] + M[:, 1, 1])  # the 2 x 2 eigenvalues in closed form: half -+ disc
+    disc = np.sqrt(half * half - (M[:, 0, 0] * M[:, 1, 1] - M[:, 0, 1] * M[:, 1, 0]))
+    re = np.minimum((half + disc).real, (half - disc).real)
     return np.where(re < 0, -0.5 / np.where(re < 0, re, -1.0), np.inf)
 
 

@@ -193,7 +193,7 @@ def continued_limits(prob, zoa_guess: np.ndarray, cap: float, rho0: np.ndarray, 
         capped = ~hit
         ratio[idx[hit]] = root[hit] / base[idx[hit]]
         ratio[idx[capped]] = cap / base[idx[capped]]  # at least that: the neighbours start from the cap
-        for e in np.flatnonzero(hit):
-            cm = prob.critical(int(idx[e]), float(root[e]))
+        done = np.flatnonzero(hit)
+        for e, cm in zip(done, prob.criticals(idx[done], root[done])):
             out["freq"][idx[e]], out["kind"][idx[e]], out["lobe"][idx[e]] = cm.chatter_frequency_hz, cm.kind, cm.lobe
     return out

@@ -127,8 +127,8 @@ def _process_pool() -> ProcessPoolExecutor | None:
         return _PROCESSES[0]
 
 
-def _piece(prob: "SdProblem", depth: np.ndarray) -> np.ndarray:
-    return prob.multipliers(np.arange(len(prob.speeds)), depth)
+def _piece(prob: "SdProblem", depth: np.ndarray, what: str = "multipliers"):
+    return getattr(prob, what)(np.arange(len(prob.speeds)), depth)
 
 
 def _broken() -> None:
@@ -287,10 +287,11 @@ class SdProblem:
         return float(evaluations) * self.steps * n * (n + self.U.shape[1] * self.steps)
 
     @staticmethod
-    def batches(pieces) -> list[np.ndarray]:
-        """``[prob.multipliers(s_idx, depth) for prob, s_idx, depth in pieces]``: on the worker processes
-        when there are several pieces and their work is above PROCESS_WORK, else on the worker threads.  The
-        numbers are the same either way (each piece is evaluated whole, in one place)."""
+    def batches(pieces, what: str = "multipliers") -> list:
+        """``[prob.multipliers(s_idx, depth) for prob, s_idx, depth in pieces]`` (or ``prob.criticals``, with
+        ``what``): on the worker processes when there are several pieces and their work is above PROCESS_WORK,
+        else on the worker threads.  The numbers are the same either way (each piece is evaluated whole, in one
+        place)."""
         pieces = list(pieces)
         pool = None
         if len(pieces) > 1 and sum(p.work(len(s)) for p, s, _ in pieces) > PROCESS_WORK:
@@ -298,7 +299,8 @@ class SdProblem:
         if pool is not None:
             futures = []
             try:
-                futures = [pool.submit(_piece, p.subset(np.asarray(s)), np.asarray(d, float)) for p, s, d in pieces]
+                futures = [pool.submit(_piece, p.subset(np.asarray(s)), np.asarray(d, float), what)
+                           for p, s, d in pieces]
                 return [f.result() for f in futures]
             except BrokenProcessPool as exc:  # a worker died (killed, out of memory): on threads from now on
                 log.warning("semi-discretization worker processes stopped (%s); going on with threads", exc)
@@ -307,7 +309,7 @@ class SdProblem:
                 for f in futures:
                     f.cancel()
                 raise
-        return parallel_map(lambda t: t[0].multipliers(t[1], t[2]), pieces)
+        return parallel_map(lambda t: getattr(t[0], what)(t[1], t[2]), pieces)
 
     def _model(self, s: np.ndarray):
         idx = np.zeros_like(s) if self.shared else s
@@ -404,10 +406,7 @@ class SdProblem:
         built in batches of bounded memory."""
         s_idx = np.atleast_1d(np.asarray(s_idx, np.int64))
         depth = np.broadcast_to(np.asarray(depth, float), s_idx.shape)
-        N = self.A.shape[1] + self.U.shape[1] * self.steps
-        m, size = self.steps, self.A.shape[1] + 2 * self.U.shape[1]
-        chunk = int(np.clip(2e7 // max(N * N, 6 * m * size * size, m * self.U.shape[1] * N), 1, 128))
-        chunk = min(chunk, max(1, -(-len(s_idx) // workers())))  # every worker gets a share
+        chunk = min(self._chunk(), max(1, -(-len(s_idx) // workers())))  # every worker gets a share
         starts = range(0, len(s_idx), chunk)
 
         def part(a):
@@ -415,9 +414,29 @@ class SdProblem:
 
         return np.concatenate(parallel_map(part, starts))
 
+    def _chunk(self) -> int:
+        """Evaluations built together: about 20 million numbers of the largest temporary at most."""
+        N = self.A.shape[1] + self.U.shape[1] * self.steps
+        m, size = self.steps, self.A.shape[1] + 2 * self.U.shape[1]
+        return int(np.clip(2e7 // max(N * N, 6 * m * size * size, m * self.U.shape[1] * N), 1, 128))
+
     def critical(self, s: int, depth: float) -> CriticalMultiplier:
         """Critical multiplier, boundary kind and dominant chatter frequency at one point."""
-        Phi = self.monodromy(np.array([s]), np.array([depth]))[0]
+        return self.criticals(np.array([s]), np.array([depth]))[0]
+
+    def criticals(self, s_idx, depth) -> list[CriticalMultiplier]:
+        """:meth:`critical` at (speed index, depth) pairs, the monodromy matrices built in batches as for
+        :meth:`multipliers` (each matrix is the same as alone: the batch runs the same products per matrix)."""
+        s_idx = np.atleast_1d(np.asarray(s_idx, np.int64))
+        depth = np.broadcast_to(np.asarray(depth, float), s_idx.shape)
+        chunk = self._chunk()
+        out = []
+        for a in range(0, len(s_idx), chunk):
+            Phi = self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk])
+            out += [self._critical(int(s), P) for s, P in zip(s_idx[a:a + chunk], Phi)]
+        return out
+
+    def _critical(self, s: int, Phi: np.ndarray) -> CriticalMultiplier:
         mu, v = _dominant_eigenpair(Phi, self.A.shape[1])
         if mu.imag < 0:  # the conjugate pair member with arg in [0, pi]
             mu, v = mu.conjugate(), v.conj()

@@ -87,3 +87,23 @@ def test_a_short_tool_that_needs_many_modes_is_still_reduced():
     assert model.A.shape[0] > 200
     assert isinstance(r, SdModel) and r.A.shape[0] <= 60, note
     assert "within 0.13 %" in note
+
+
+def test_the_depth_curve_in_closed_form_is_lapacks():
+    """The reduction check's zero-order depth per frequency takes the two eigenvalues of each 2 x 2 matrix in
+    closed form (issue "Lobes in seconds": LAPACK per 2 x 2 matrix was a third of the check's time); they are
+    LAPACK's to round-off on the model's whole grid, and to the eigenvalues' own conditioning (sqrt of the unit
+    round-off, 1.5e-8) on near-degenerate matrices."""
+    from spindlesim.chatter.sd_model import _depth_curve
+
+    K0 = PROC.mean_directional()
+    H = BIG.receptance(2 * np.pi * BIG.frequency_grid())
+    rng = np.random.default_rng(3)
+    # -K0 H near -1e-7 I: a double eigenvalue, split by 1e-9 of it
+    near = 1e-7 * np.linalg.inv(K0) @ (np.eye(2) + 1e-9 * (rng.normal(size=(50, 2, 2)) + 1j * rng.normal(size=(50, 2, 2))))
+    for h, rtol in ((H, 1e-9), (near, 1e-7)):
+        lam = np.linalg.eigvals(-np.einsum("ij,fjk->fik", K0, h)).real.min(axis=1)
+        want = np.where(lam < 0, -0.5 / np.where(lam < 0, lam, -1.0), np.inf)
+        got = _depth_curve(K0, h)
+        assert np.array_equal(np.isfinite(got), np.isfinite(want)) and np.isfinite(want).any()
+        np.testing.assert_allclose(got[np.isfinite(want)], want[np.isfinite(want)], rtol=rtol)

@@ -58,3 +58,17 @@ def test_batches_on_worker_processes_give_the_same_limits_as_threads(monkeypatch
     assert len(sent) > 10
     assert np.all(np.isfinite(threads))
     np.testing.assert_array_equal(procs, threads)
+
+
+def test_critical_multipliers_in_one_batch_are_those_of_one_point_at_a_time(monkeypatch):
+    """The boundary's kind, chatter frequency and lobe number at every limit are computed in batches on the
+    workers (issue "Lobes in seconds"): each is bit for bit what the one-point evaluation (the code before it)
+    gives, on threads and on the worker processes alike."""
+    prob = sd_lobes._Grouped(PROCESS, [TOOL], np.linspace(9000.0, 24000.0, 7), np.array([60, 60, 60, 80, 80, 80, 80]), 1)
+    s_idx, depth = np.arange(7), np.linspace(0.4e-3, 1.6e-3, 7)
+    one = [prob.problems[prob.group[s]].critical(int(prob.local[s]), float(a)) for s, a in zip(s_idx, depth)]
+    for where in (1e300, 0.0):  # threads; then every batch on the worker processes
+        monkeypatch.setattr(sd, "PROCESS_WORK", where)
+        _with_workers(monkeypatch, 2)
+        assert prob.criticals(s_idx, depth) == one
+    assert {cm.kind for cm in one} <= {"hopf", "flip"} and all(cm.chatter_frequency_hz > 0 for cm in one)
