@@ -17,6 +17,7 @@ from typing import Any, Callable
 from ..chatter import run_chatter, stability_lobes
 from ..chatter.section import ChatterSpec
 from ..chatter.tool import ToolSeries, for_simulation
+from .aside import Aside, Known
 from .points import OperatingPoints
 from .tool_point import coefficients_change, tool_point_model, tool_point_series
 
@@ -91,41 +92,71 @@ def _rotor_tools(points: OperatingPoints, spec: ChatterSpec, deck_rpm: float, ex
 
 def chatter_study(spec: ChatterSpec, points: OperatingPoints | None = None, deck_rpm: float = 0.0,
                   exact: bool = False, simulate: tuple[tuple[float, float], ...] = (),
-                  speed_limit_rpm: float | None = None,
+                  speed_limit_rpm: "float | None | Aside" = None,
                   progress: Callable[[int, int], None] | None = None, stability_map: bool = False) -> ChatterStudy:
     """The module note's study of ``spec``; ``points``: the deck's rotor at its operating points (needed when the
     FRF comes from the rotor), ``deck_rpm`` its operating speed, ``simulate`` more (speed rpm, depth m) checks in
     time beside the section's, ``stability_map`` the semi-discretization's map even where the section does not ask
-    for it."""
+    for it; ``speed_limit_rpm`` the thermal speed limit, or an :class:`~.aside.Aside` computing it meanwhile.  The
+    comparison's lobes are computed aside while the lobes at every speed are (:mod:`.aside`)."""
     sims = tuple(spec.simulation_points) + tuple((float(s), float(a)) for s, a in simulate)
     info: dict[str, Any] = {"frf_source": spec.frf_source}
-    deck_tool = None
-    if spec.frf_source == "rotor":
-        if points is None:
-            raise ValueError("frf: rotor needs the rotor's operating points")
-        tool, deck_tool, info = _rotor_tools(points, spec, float(deck_rpm), exact, progress)
-    else:
-        tool = ToolSeries.constant(spec.tool)
     opts = dict(spec.method_options)
     if stability_map:
         opts["stability_map"] = True
+    limit = speed_limit_rpm if hasattr(speed_limit_rpm, "result") else Known(speed_limit_rpm)
+    deck_tool, compare = None, Known(None)
+    try:
+        if spec.frf_source == "rotor":
+            if points is None:
+                raise ValueError("frf: rotor needs the rotor's operating points")
+            tool, deck_tool, info = _rotor_tools(points, spec, float(deck_rpm), exact, progress)
+            if info["frf_at_each_speed"]:  # the comparison: every COMPARE_EVERY-th speed, meanwhile
+                compare = Aside(_compare, spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
+                                opts | {"stability_map": False})
+        else:
+            tool = ToolSeries.constant(spec.tool)
+    except BaseException:
+        limit.cancel()
+        raise
     spec = dataclasses.replace(spec, simulation_points=sims, method_options=MappingProxyType(opts))
     try:
-        result = run_chatter(spec, tool, simulation_tool=tool.mapped(for_simulation) if sims else None,
-                             speed_limit_rpm=speed_limit_rpm)
+        result = run_chatter(spec, tool, simulation_tool=tool.mapped(for_simulation) if sims else None)
     except KeyboardInterrupt:  # in the lobes: the tool-point FRF is what was computed
+        compare.cancel()
+        limit.cancel()
         why = (f"interrupted by the user in the lobes ({spec.process.method_for(spec.method).replace('_', ' ')}): "
                "the tool-point FRF is written, no lobes")
         log.warning("chatter: %s", why)
         return ChatterStudy(None, spec, None, deck_tool, info, why, tool)
+    except BaseException:
+        compare.cancel()
+        limit.cancel()
+        raise
+    try:
+        result = dataclasses.replace(result, speed_limit_rpm=limit.result())
+    except KeyboardInterrupt:
+        compare.cancel()
+        limit.cancel()
+        why = ("interrupted by the user while the thermal speed limit was solved: the lobes are written without it "
+               "(the recommendation and the minimum over the whole speed range)")
+        log.warning("chatter: %s", why)
+        return ChatterStudy(result, spec, None, deck_tool, info, why, result.tool)
     at_deck = None
-    if deck_tool is not None and info["frf_at_each_speed"] and not result.interrupted:
-        try:  # the comparison: every COMPARE_EVERY-th speed
-            at_deck = stability_lobes(spec.process, deck_tool, spec.speeds_rpm[::COMPARE_EVERY], spec.method,
-                                      **(opts | {"stability_map": False}))
+    if result.interrupted:
+        compare.cancel()
+    else:
+        try:
+            at_deck = compare.result()
         except KeyboardInterrupt:
+            compare.cancel()
             why = ("interrupted by the user in the lobes of the deck speed's FRF (the comparison): the lobes are "
                    "written, the comparison not")
             log.warning("chatter: %s", why)
             return ChatterStudy(result, spec, None, deck_tool, info, why, result.tool)
     return ChatterStudy(result, spec, at_deck, deck_tool, info, result.interrupted, result.tool)
+
+
+def _compare(process, tool, speeds_rpm, method, options: dict):
+    """The lobes of the deck speed's FRF (the comparison), as :func:`~spindlesim.chatter.stability_lobes`."""
+    return stability_lobes(process, tool, speeds_rpm, method, **options)

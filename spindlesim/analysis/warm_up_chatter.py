@@ -8,7 +8,8 @@ directional matrix), on the tool-point model of that instant (the full state spa
 bearings at that state, ``tool_point.state_space``): the method and the number of ``spindlesim chatter``, whose
 diagram at a speed holds the bearings at that speed's thermal equilibrium; at the end of a step long enough to
 settle, the two agree (tests/validation/test_warm_up_chatter.py).  One speed an instant, not the whole diagram:
-about 0.3 s an instant on the milling spindle instead of several seconds.  An instant at rest (speed 0) cuts
+about 0.3 s an instant on the milling spindle instead of several seconds, the instants shared among the
+cores (:func:`~.aside.map_aside`).  An instant at rest (speed 0) cuts
 nothing: NaN.  The minimum over every speed stays the steady-state diagram's (``spindlesim chatter``).
 """
 
@@ -20,6 +21,7 @@ from typing import Mapping
 import numpy as np
 
 from ..chatter import stability_lobes
+from .aside import map_aside
 from .points import OperatingPoints
 from .tool_point import point_dofs, state_space
 
@@ -59,26 +61,27 @@ def stable_depth_through(points: OperatingPoints, states, process, method: str =
     in ``failures``; the others are kept."""
     opts = dict(options or {}) | {"stability_map": False}
     _, tip = point_dofs(points.rotor, node)
-    done: dict[int, tuple[float, float, bool, float]] = {}
-    rows, failures = [], []
+    unique: dict[int, object] = {}  # the instants to solve, one per operating state in motion
     for ts in states:
-        key = id(ts.operating)
-        if key not in done:
-            done[key] = (np.nan, np.nan, False, np.nan)
-            rpm = float(ts.speed_rpm)
-            if rpm > 0.0:
-                sysm = points.system(ts.operating)
-                try:
-                    dg = stability_lobes(process, state_space(sysm, np.eye(sysm.size)[:, tip]), [rpm], method,
-                                         **opts)
-                except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
-                    when = "" if ts.time_s is None else f" at {ts.time_s / 60.0:.1f} min"
-                    failures.append(f"lobes{when} ({rpm:g} rpm) failed: {exc}")
-                else:
-                    capped = bool(len(dg.capped) and dg.capped[0])
-                    done[key] = (float(dg.limit_depth_m[0]), float(dg.chatter_frequency_hz[0]), capped,
-                                 float(dg.depth_cap_m))
-        rows.append((float(ts.speed_rpm),) + done[key])
+        if float(ts.speed_rpm) > 0.0:
+            unique.setdefault(id(ts.operating), ts)
+
+    def solve(ts) -> tuple[tuple[float, float, bool, float], str]:
+        rpm = float(ts.speed_rpm)
+        sysm = points.system(ts.operating)
+        try:
+            dg = stability_lobes(process, state_space(sysm, np.eye(sysm.size)[:, tip]), [rpm], method, **opts)
+        except (np.linalg.LinAlgError, ArithmeticError, ValueError) as exc:
+            when = "" if ts.time_s is None else f" at {ts.time_s / 60.0:.1f} min"
+            return (np.nan, np.nan, False, np.nan), f"lobes{when} ({rpm:g} rpm) failed: {exc}"
+        capped = bool(len(dg.capped) and dg.capped[0])
+        return (float(dg.limit_depth_m[0]), float(dg.chatter_frequency_hz[0]), capped, float(dg.depth_cap_m)), ""
+
+    # the instants are independent: shared with a forked child per further core (the same numbers as in turn)
+    got = dict(zip(unique, map_aside(solve, unique.values())))
+    failures = [why for _, why in got.values() if why]
+    rows = [(float(ts.speed_rpm),) + (got[id(ts.operating)][0] if id(ts.operating) in got
+                                      else (np.nan, np.nan, False, np.nan)) for ts in states]
     speed = np.array([r[0] for r in rows], float)
     return StableDepth(np.array([r[1] for r in rows], float), speed, np.array([r[2] for r in rows], float),
                        np.array([r[3] for r in rows], bool), np.array([r[4] for r in rows], float),

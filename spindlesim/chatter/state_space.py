@@ -106,8 +106,9 @@ class ToolPointModel:
     # -- frequency response -------------------------------------------------------------------
     @cached_property
     def eigen(self) -> tuple[np.ndarray, np.ndarray, tuple]:
-        """(poles, eigenvectors V, LU factors of V): computed once for the FRF and the modal reductions."""
-        lam, V = sla.eig(self.A, check_finite=False)
+        """(poles, eigenvectors V, LU factors of V): computed once for the FRF and the modal reductions (numpy's
+        geev, which releases the interpreter lock: a lobe diagram's models are decomposed on the worker threads)."""
+        lam, V = np.linalg.eig(self.A)
         return lam, V, sla.lu_factor(V, check_finite=False)
 
     @cached_property

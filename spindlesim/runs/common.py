@@ -81,6 +81,30 @@ def thermal_speed_limit(loaded) -> tuple[float, float] | None:
         RunContext(loaded))
 
 
+def thermal_speed_limit_aside(loaded):
+    """:func:`thermal_speed_limit` computed in a forked process while the caller goes on
+    (:class:`~spindlesim.analysis.aside.Aside`; ``result()`` waits for it and keeps it in the run context), or
+    at once where it is known already or the deck has no ``spindle_thermal`` section."""
+    from ..analysis.aside import Aside, Known
+
+    ctx = context_of(loaded)
+    if getattr(ctx.loaded.deck, "spindle_thermal", None) is None or ctx._limit is not None:
+        return Known(thermal_speed_limit(loaded))
+    aside = Aside(_solve_limit, ctx)
+    remember = ctx.remember_thermal_speed_limit
+
+    class _Kept:
+        def result(self):
+            got = aside.result()
+            remember(got)
+            return got
+
+        def cancel(self):
+            aside.cancel()
+
+    return _Kept()
+
+
 def _solve_limit(ctx: RunContext) -> tuple[float, float] | None:
     d = ctx.loaded.deck
     if getattr(d, "spindle_thermal", None) is None:

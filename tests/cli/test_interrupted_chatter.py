@@ -100,3 +100,47 @@ def test_ctrl_c_before_anything_is_computed_leaves_no_folder(tmp_path, monkeypat
     out, res = _run(tmp_path)
     assert res.exit_code == 130, res.output
     assert not out.exists()
+
+
+class _Pressed:
+    """A pending result (the comparison's, the speed limit's) whose wait the user interrupts."""
+
+    cancelled = 0
+
+    def __init__(self, *a, **k):
+        pass
+
+    def result(self):
+        raise KeyboardInterrupt
+
+    def cancel(self):
+        _Pressed.cancelled += 1
+
+
+def test_ctrl_c_while_the_comparison_is_awaited_keeps_the_lobes(tmp_path, monkeypatch):
+    """The lobes of the deck speed's FRF are computed aside (spindlesim/analysis/aside.py) while the lobes at every
+    speed are; a Ctrl-C while they are awaited keeps the lobes and stops the child."""
+    import spindlesim.analysis.chatter_study as study
+
+    monkeypatch.setattr(study, "Aside", _Pressed)
+    _Pressed.cancelled = 0
+    out, res = _run(tmp_path)
+    assert res.exit_code == 130, res.output
+    assert _Pressed.cancelled >= 1
+    with h5py.File(out / "chatter.h5") as f:
+        assert not f.attrs["complete"]
+        assert "the comparison not" in f.attrs["incomplete_reason"]
+        assert np.any(np.isfinite(f["chatter/limit_depth_m"][:])) and "at_deck_speed" not in f["chatter"]
+
+
+def test_ctrl_c_while_the_speed_limit_is_awaited_keeps_the_lobes(tmp_path, monkeypatch):
+    """The thermal speed limit is solved aside too; interrupted while it is awaited, the lobes are written without it."""
+    import spindlesim.runs.common as common
+
+    monkeypatch.setattr(common, "thermal_speed_limit_aside", lambda loaded: _Pressed())
+    out, res = _run(tmp_path)
+    assert res.exit_code == 130, res.output
+    with h5py.File(out / "chatter.h5") as f:
+        assert not f.attrs["complete"]
+        assert "thermal speed limit" in f.attrs["incomplete_reason"]
+        assert np.any(np.isfinite(f["chatter/limit_depth_m"][:]))

@@ -1,0 +1,90 @@
+"""A computation set aside (spindlesim/analysis/aside.py): computed in a forked child while this process goes on,
+its result the call's own; the child's exception raised here as the call raises it; Ctrl-C stops the child; where
+no child can be forked (SPINDLESIM_SD_PROCESSES=0) the call is made here when its result is asked for."""
+
+import os
+import time
+
+import numpy as np
+import pytest
+
+from spindlesim.analysis import aside
+from spindlesim.analysis.aside import Aside, Known
+
+
+def _pid_and_sum(x):
+    return os.getpid(), float(np.sum(x))
+
+
+class Odd(Exception):
+    """An exception that does not survive pickling (two arguments, one taken)."""
+
+    def __init__(self, a, b):
+        super().__init__(f"{a}/{b}")
+
+
+def _raises():
+    raise Odd(1, 2)
+
+
+def _sleeps():
+    time.sleep(600)
+
+
+@pytest.mark.skipif(not aside.available(), reason="no fork here")
+def test_the_result_is_computed_in_a_child_and_is_the_calls():
+    x = np.linspace(0.0, 1.0, 1001)
+    pid, got = Aside(_pid_and_sum, x).result()
+    assert pid != os.getpid()
+    assert got == float(np.sum(x))
+
+
+@pytest.mark.skipif(not aside.available(), reason="no fork here")
+def test_the_childs_exception_is_raised_here_whole():
+    with pytest.raises(Odd, match="1/2"):
+        Aside(_raises).result()
+
+
+@pytest.mark.skipif(not aside.available(), reason="no fork here")
+def test_cancel_stops_the_child():
+    a = Aside(_sleeps)
+    procs = list(a._pool._processes.values())
+    assert procs and procs[0].is_alive()
+    a.cancel()
+    procs[0].join(timeout=30)  # a child left running would fail here instead of hanging the suite
+    assert not procs[0].is_alive()
+
+
+def test_without_worker_processes_the_call_is_made_here(monkeypatch):
+    monkeypatch.setenv("SPINDLESIM_SD_PROCESSES", "0")
+    assert not aside.available()
+    pid, got = Aside(_pid_and_sum, np.ones(3)).result()
+    assert pid == os.getpid() and got == 3.0
+    assert Known(5).result() == 5
+
+
+@pytest.mark.skipif(not aside.available(), reason="no fork here")
+def test_chatter_computed_aside_is_the_serial_chatter(tmp_path, monkeypatch):
+    """`chatter` on the milling deck (12 speeds, its thermal section kept) with the comparison's lobes and the
+    thermal speed limit computed aside, and with everything in this process: the same numbers, bit for bit
+    (issue "Lobes in seconds": the two were computed one after the other before)."""
+    from pathlib import Path
+
+    from spindlesim.deck import load_deck
+    from spindlesim.runs import perform_analysis
+
+    text = (Path(__file__).parents[2] / "decks" / "milling_spindle.yaml").read_text().replace(
+        "speeds_rpm: {start: 6000, stop: 24000, count: 200}", "speeds_rpm: {start: 14000, stop: 20000, count: 12}")
+    deck = tmp_path / "d.yaml"
+    deck.write_text(text)
+    runs = {}
+    for where in ("1", "0"):
+        monkeypatch.setenv("SPINDLESIM_SD_PROCESSES", where)
+        runs[where] = perform_analysis("chatter", load_deck(str(deck)), tmp_path / where).result
+    a, b = runs["1"], runs["0"]
+    assert a.result.speed_limit_rpm == b.result.speed_limit_rpm is not None  # 18,000 rpm: within the speeds
+    assert a.result.speed_limit_rpm < 20000
+    for x, y in ((a.result.diagram, b.result.diagram), (a.at_deck, b.at_deck)):
+        assert np.array_equal(x.limit_depth_m, y.limit_depth_m, equal_nan=True)
+        assert np.array_equal(x.chatter_frequency_hz, y.chatter_frequency_hz, equal_nan=True)
+    assert a.result.recommendation == b.result.recommendation
