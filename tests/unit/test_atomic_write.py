@@ -11,11 +11,21 @@ import spindlesim.output.hdf5 as hdf5
 from spindlesim.runs.status import _STALE
 
 
-def test_a_ctrl_c_right_after_the_file_is_created_leaves_nothing(tmp_path, monkeypatch):
-    def interrupted(fd):  # the descriptor is left to the process's end
+class _InterruptedClose:
+    """The writer's ``os`` with a Ctrl-C in ``close`` (the descriptor is left to the process's end); the real
+    ``os.close`` stays untouched for everything else (a finalizer of another test's worker processes may run
+    meanwhile)."""
+
+    def __getattr__(self, name):
+        return getattr(os, name)
+
+    @staticmethod
+    def close(fd):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(hdf5.os, "close", interrupted)
+
+def test_a_ctrl_c_right_after_the_file_is_created_leaves_nothing(tmp_path, monkeypatch):
+    monkeypatch.setattr(hdf5, "os", _InterruptedClose())
     with pytest.raises(KeyboardInterrupt):
         with hdf5.atomic(tmp_path / "campbell.h5"):
             pytest.fail("the body must not run")
