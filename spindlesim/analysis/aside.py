@@ -142,3 +142,16 @@ class Known:
 
     def cancel(self) -> None:
         pass
+
+
+class Then:
+    """The result of ``pending`` (an :class:`Aside` or :class:`Known`) passed through ``fn``, same interface."""
+
+    def __init__(self, pending: Any, fn: Callable[[Any], Any]):
+        self._pending, self._fn = pending, fn
+
+    def result(self) -> Any:
+        return self._fn(self._pending.result())
+
+    def cancel(self) -> None:
+        self._pending.cancel()

@@ -20,6 +20,7 @@ log = logging.getLogger(__name__)
 
 
 def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, progress=None):
+    from ..analysis.aside import Then
     from ..analysis.chatter_study import chatter_study
     from ..chatter import build_chatter
     from ..deck import deck_folder, require_rotor, require_section
@@ -36,7 +37,7 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     limit = thermal_speed_limit_aside(loaded)  # (highest stable, lowest running away) or None, solved meanwhile
     st = chatter_study(spec, points, float(d.operating.speed_rpm) if d.operating is not None else 0.0,
                        bool(opts.get("exact")), tuple((float(s), 1e-3 * float(a)) for s, a in opts.get("simulate") or ()),
-                       _first(limit), progress, bool(opts.get("map")))
+                       Then(limit, lambda got: None if got is None else got[0]), progress, bool(opts.get("map")))
     if not st.interrupted:
         from .status import Written
 
@@ -51,20 +52,6 @@ def run(loaded: Any, outdir: Path, run_info: Any, options: dict | None = None, p
     else:
         paths = _write_tool_point(outdir, run_info, st)
     raise IncompleteRun(f"chatter: {st.interrupted}", paths, interrupted=True, result=st, noted=st.interrupted)
-
-
-class _first:
-    """The speed limit's first value (the highest speed found stable) of a pending (stable, runaway) pair."""
-
-    def __init__(self, pending):
-        self._pending = pending
-
-    def result(self):
-        got = self._pending.result()
-        return None if got is None else got[0]
-
-    def cancel(self):
-        self._pending.cancel()
 
 
 def _write_tool_point(outdir, run_info, st) -> list[Path]:

@@ -85,24 +85,17 @@ def thermal_speed_limit_aside(loaded):
     """:func:`thermal_speed_limit` computed in a forked process while the caller goes on
     (:class:`~spindlesim.analysis.aside.Aside`; ``result()`` waits for it and keeps it in the run context), or
     at once where it is known already or the deck has no ``spindle_thermal`` section."""
-    from ..analysis.aside import Aside, Known
+    from ..analysis.aside import Aside, Known, Then
 
     ctx = context_of(loaded)
     if getattr(ctx.loaded.deck, "spindle_thermal", None) is None or ctx._limit is not None:
         return Known(thermal_speed_limit(loaded))
-    aside = Aside(_solve_limit, ctx)
-    remember = ctx.remember_thermal_speed_limit
 
-    class _Kept:
-        def result(self):
-            got = aside.result()
-            remember(got)
-            return got
+    def kept(limit):
+        ctx.remember_thermal_speed_limit(limit)
+        return limit
 
-        def cancel(self):
-            aside.cancel()
-
-    return _Kept()
+    return Then(Aside(_solve_limit, ctx), kept)
 
 
 def _solve_limit(ctx: RunContext) -> tuple[float, float] | None:
