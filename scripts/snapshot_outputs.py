@@ -114,8 +114,21 @@ def compare(a: dict, b: dict) -> list[str]:
             fx, fy = x["files"].get(fname, {}), y["files"].get(fname, {})
             for ds in sorted(set(fx) | set(fy)):
                 if fx.get(ds) != fy.get(ds):
-                    diffs.append(f"{key}: {fname}:{ds} differs")
+                    diffs.append(f"{key}: {fname}:{ds} differs{_by_how_much(fx.get(ds), fy.get(ds))}")
     return diffs
+
+
+def _by_how_much(x, y) -> str:
+    """For two numeric values of a dataset: the largest difference relative to the largest magnitude."""
+    try:
+        a = np.asarray(x.get("value") if isinstance(x, dict) else x, dtype=float)
+        b = np.asarray(y.get("value") if isinstance(y, dict) else y, dtype=float)
+    except (TypeError, ValueError, AttributeError):
+        return ""
+    if a.shape != b.shape or not a.size:
+        return f" (shape {a.shape} -> {b.shape})"
+    scale = max(float(np.nanmax(np.abs(a))), 1e-300)
+    return f" (max {float(np.nanmax(np.abs(a - b))) / scale:.1e} of its largest value)"
 
 
 if __name__ == "__main__":

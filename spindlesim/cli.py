@@ -65,7 +65,14 @@ def main(ctx: click.Context, verbose: int, strict: bool) -> None:
     ctx.meta["spindlesim.strict"] = strict  # read by commands.common.load_or_default
     _configure_logging(verbose)
     os.environ.setdefault("MPLBACKEND", "Agg")
-    # Rotor matrices are small (~100-500 DOF): threaded BLAS only adds overhead (docs/decisions.md).
+    _one_blas_thread()
+
+
+def _one_blas_thread() -> None:
+    """Rotor matrices are small (~100-500 DOF): threaded BLAS only adds overhead (docs/decisions.md), and a
+    process forked while BLAS threads exist (a computation set aside, a figure process) can stall in them.  Read
+    when numpy is first imported: :func:`console` sets it before click resolves the subcommand (which imports
+    the command's module, and numpy with it, before the group's own callback runs)."""
     for var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
         os.environ.setdefault(var, "1")
 
@@ -123,6 +130,7 @@ def console() -> None:
     has been waited for)."""
     import gc
 
+    _one_blas_thread()
     try:
         from .output import drawing
 

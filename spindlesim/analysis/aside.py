@@ -21,6 +21,8 @@ import multiprocessing
 import os
 import signal
 import sys
+import threading
+import time
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 from typing import Any, Callable
@@ -33,9 +35,18 @@ _KEYS = itertools.count()
 
 def _child_start() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # this process decides (cancel)
+    threading.Thread(target=exit_with_parent, args=(os.getppid(),), daemon=True, name="aside-watchdog").start()
     sd = sys.modules.get("spindlesim.chatter.semi_discretization")
     if sd is not None:  # the thread pools copied from this process have no threads in the child
         sd._SERIAL = True
+
+
+def exit_with_parent(parent: int, period_s: float = 0.5) -> None:
+    """A child's watchdog (run on a daemon thread): exit when the process ``parent`` is gone (killed: a child
+    that waits for work from it would wait for ever)."""
+    while os.getppid() == parent:
+        time.sleep(period_s)
+    os._exit(1)
 
 
 class _Failed:

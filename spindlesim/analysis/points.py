@@ -36,6 +36,8 @@ log = logging.getLogger(__name__)
 
 #: what a failing static state raises (a bearing that cannot carry its load, no equilibrium found)
 SOLVE_ERRORS = (ValueError, ArithmeticError, RuntimeError, np.linalg.LinAlgError)
+#: a list of at least this many speeds still to solve is shared with a forked child (``OperatingPoints.along``)
+SHARE_MIN = 16
 
 
 @dataclass(frozen=True)
@@ -133,37 +135,99 @@ class OperatingPoints:
               on_state: Callable[[OperatingState, float], None] | None = None, what: str = "") -> Sweep:
         """Static states at every speed, each started from its neighbour's (module note's failure policy);
         ``tick()`` after each speed, ``on_state(state, rpm)`` told of each state found; ``what`` names the
-        analysis in the messages.  The first speed's failure is raised (nothing to show)."""
+        analysis in the messages.  The first speed's failure is raised (nothing to show).
+
+        A long list of bearings solved by iteration is shared with a forked child once the first speed is solved
+        (:meth:`_shared`): the child solves the second half, its first speed from the states known at the fork
+        instead of from its neighbour (the same state to the solvers' tolerances); where the child stops short, this
+        process goes on from there as it would have alone."""
         speeds = np.asarray(speeds_rpm, float)
         label = f"{what}: " if what else ""
         states: list[OperatingState] = []
-        st, first = None, 0
-        for s in speeds:
-            try:
-                st = self.state(s, start=st)
-            except KeyboardInterrupt:
-                if not states:
-                    raise
-                return self._partial(speeds, states, first, f"interrupted by the user at {s:g} rpm", True, label)
-            except SOLVE_ERRORS as exc:
-                if not states and s <= 0 and len(speeds) > 1:  # e.g. a fluid film carries nothing at rest
-                    log.warning("%s%g rpm left out (%s)", label, s, exc)
-                    first += 1
-                    if tick is not None:
-                        tick()
-                    continue
-                if not states:
-                    raise
-                return self._partial(speeds, states, first, f"stopped at {s:g} rpm", False, label, exc)
-            states.append(st)
-            try:  # a Ctrl-C while the caller looks at the state or shows the progress: the states found are kept
-                if on_state is not None:
-                    on_state(st, float(s))
-                if tick is not None:
-                    tick()
-            except KeyboardInterrupt:
-                return self._partial(speeds, states, first, f"interrupted by the user after {s:g} rpm", True, label)
+        st, first, k, end, other = None, 0, 0, len(speeds), None
+        try:
+            while k < end:
+                s = speeds[k]
+                try:
+                    st = self.state(s, start=st)
+                except KeyboardInterrupt:
+                    if not states:
+                        raise
+                    return self._partial(speeds, states, first, f"interrupted by the user at {s:g} rpm", True, label)
+                except SOLVE_ERRORS as exc:
+                    if not states and s <= 0 and len(speeds) > 1:  # e.g. a fluid film carries nothing at rest
+                        log.warning("%s%g rpm left out (%s)", label, s, exc)
+                        first, k = first + 1, k + 1
+                        if tick is not None:
+                            tick()
+                        continue
+                    if not states:
+                        raise
+                    return self._partial(speeds, states, first, f"stopped at {s:g} rpm", False, label, exc)
+                states.append(st)
+                k += 1
+                if not self._told(st, float(s), on_state, tick):
+                    return self._partial(speeds, states, first, f"interrupted by the user after {s:g} rpm", True,
+                                         label)
+                if other is None and len(states) == 1:
+                    end, other = self._shared(speeds, k)
+                if k == end and other is not None:  # the child's half: its states, then on from where it stopped
+                    try:
+                        theirs = other.result()
+                    except KeyboardInterrupt:
+                        return self._partial(speeds, states, first, f"interrupted by the user after {s:g} rpm",
+                                             True, label)
+                    other, end = None, len(speeds)
+                    for st in theirs:
+                        states.append(st)
+                        k += 1
+                        if not self._told(st, float(speeds[k - 1]), on_state, tick):
+                            return self._partial(speeds, states, first, "interrupted by the user after "
+                                                 f"{speeds[k - 1]:g} rpm", True, label)
+        finally:
+            if other is not None:
+                other.cancel()
         return Sweep(speeds[first:first + len(states)], tuple(states), "", first)
+
+    @staticmethod
+    def _told(st: OperatingState, rpm: float, on_state, tick) -> bool:
+        """``on_state`` and ``tick`` of :meth:`along` told of a state; False on a Ctrl-C meanwhile (the states found
+        are kept)."""
+        try:
+            if on_state is not None:
+                on_state(st, rpm)
+            if tick is not None:
+                tick()
+        except KeyboardInterrupt:
+            return False
+        return True
+
+    def _shared(self, speeds: np.ndarray, k: int):
+        """(where this process stops, the child solving the rest) for :meth:`along` with speeds ``k:`` to go:
+        (len(speeds), None) unless they are at least SHARE_MIN, a bearing is solved by iteration (the
+        contract's ``iterative``) or the spindle's thermal model sets the states, and a child can be forked."""
+        from .aside import Aside, Then, available
+
+        rest = len(speeds) - k
+        iterative = self.thermal is not None or any(b.iterative for b in self.rotor.bearings)
+        if rest < SHARE_MIN or not iterative or not available():
+            return len(speeds), None
+        cut = k + rest // 2
+        return cut, Then(Aside(_solve_run, self, speeds[cut:]), self._received)
+
+    def _received(self, got) -> list[OperatingState]:
+        """The child's states (:func:`_solve_run`) kept here as if solved here."""
+        out = []
+        for rpm, st, ts in zip(*got):
+            st = dataclasses.replace(st, shaft=self.shaft)
+            if ts is not None:
+                self._thermal_states.setdefault(rpm, dataclasses.replace(ts, operating=st))
+                st = self._thermal_states[rpm].operating
+            if rpm not in self._states:
+                self.solves += 1
+                self._states[rpm] = st
+            out.append(self._states[rpm])
+        return out
 
     def _partial(self, speeds, states, first, where, interrupted, label, exc=None) -> Sweep:
         done = (states[0].speed_rad_s / RPM, states[-1].speed_rad_s / RPM)
@@ -196,3 +260,21 @@ class OperatingPoints:
             if key[0] == kind and self._bases[key] is not None:
                 return self._bases[key]
         return None
+
+
+def _solve_run(points: OperatingPoints, speeds: np.ndarray) -> list[OperatingState]:
+    """The states at ``speeds``, each from the previous one's, the first from the states known (what the child of
+    :meth:`OperatingPoints.along` computes): up to the first that fails (this process goes on from there).  The
+    shaft's matrices are left out of what is sent back (this process has them; :meth:`OperatingPoints._received` puts
+    them back), with the thermal states that set them."""
+    out: list[OperatingState] = []
+    st = None
+    for s in speeds:
+        try:
+            st = points.state(s, start=st)
+        except SOLVE_ERRORS:
+            break
+        out.append(st)
+    thermal = [points._thermal_states.get(float(s)) for s in speeds[:len(out)]]
+    return ([float(s) for s in speeds[:len(out)]], [dataclasses.replace(x, shaft=None) for x in out],
+            [None if t is None else dataclasses.replace(t, operating=None) for t in thermal])

@@ -27,6 +27,10 @@ internal_mass : np.ndarray
     outer-race segments of a flexible-race roller bearing; empty for most bearings.  They
     follow the node DOFs in q, v, f and the tangents; the transient engine integrates them
     with the rotor, every other analysis condenses them out (through ``linearized``).
+iterative : bool
+    Whether its state at an operating point is found by iteration (a contact equilibrium, a film's
+    thermal equilibrium): a sweep over many speeds then shares its static states among the cores
+    (``analysis.points``).  False for a bearing whose reaction is linear; the default is True.
 
 Methods
 -------
@@ -122,6 +126,7 @@ class Bearing(Protocol):
     node: int
     dof_names: tuple[str, ...]
     internal_mass: np.ndarray
+    iterative: bool
 
     def force_and_tangent(self, q: np.ndarray, v: np.ndarray, t: float, speed: float,
                           angle: float | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
@@ -191,6 +196,7 @@ class BearingBase:
     """Defaults of the optional parts of the contract; a family overrides what applies to it."""
 
     internal_mass: np.ndarray = np.zeros(0)
+    iterative: bool = True
 
     def static_displacement(self, speed: float, static_load: np.ndarray | None = None,
                             start: np.ndarray | None = None) -> np.ndarray:
@@ -285,6 +291,10 @@ class AxiallyShifted(BearingBase):
         if name == "inner" or name.startswith("__"):  # not set yet (a copy or an unpickling in progress)
             raise AttributeError(name)
         return getattr(self.inner, name)
+
+    @property
+    def iterative(self) -> bool:
+        return self.inner.iterative
 
     def force_and_tangent(self, q, v, t, speed, angle=None):
         return self.inner.force_and_tangent(np.asarray(q, float) + self._shift, v, t, speed, angle)

@@ -36,6 +36,8 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
+from ..analysis.aside import exit_with_parent
+
 log = logging.getLogger(__name__)
 
 ENV = "SPINDLESIM_FIGURE_PROCESS"  # "0": draw in the main process even from the command line
@@ -146,16 +148,9 @@ def _start_child(parent: int) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     if hasattr(signal, "pthread_sigmask"):
         signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # blocked by the parent around the fork
-    threading.Thread(target=_exit_with_parent, args=(parent,), daemon=True, name="figure-process-watchdog").start()
+    threading.Thread(target=exit_with_parent, args=(parent,), daemon=True, name="figure-process-watchdog").start()
     from . import figures
 
     figures.new_figure()  # the canvas and the font cache: the first figure costs no more than the others
     gc.freeze()  # the imported modules are never garbage: the collector need not walk them again
 
-
-def _exit_with_parent(parent: int, period_s: float = 0.5) -> None:
-    import time
-
-    while os.getppid() == parent:
-        time.sleep(period_s)
-    os._exit(1)

@@ -5,6 +5,7 @@ report read: output/rotor_summary.py) and the files written from it."""
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import logging
 
@@ -66,17 +67,19 @@ def run_campbell(loaded, outdir, run, opts, progress):
     d = loaded.deck
     speeds = opts.get("speeds_rpm")
     speeds = value_range(d.campbell.speeds_rpm) if speeds is None else np.asarray(speeds, float)
-    st = campbell_study(operating_points(loaded), speeds, first(opts.get("modes"), d.campbell.modes),
-                        d.campbell.compare_frozen_rpm, excitation_orders(d), d.operating.speed_range_rpm,
-                        bool(opts.get("exact")), progress, operating_rpm=d.operating.speed_rpm)
-    res = st.hot
-    if st.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
-        run = dataclasses.replace(run, complete=False, incomplete_reason=st.incomplete_reason)
-    paths = [write_campbell(outdir / "campbell.h5", run, res, st.frozen, st.frozen_rpm, st.cold, st.stiffness,
-                            operating_rpm=st.operating_rpm)]
+    limit = _limit_aside(loaded, plots_wanted(opts))
+    with _cancelled_on_error(limit):
+        st = campbell_study(operating_points(loaded), speeds, first(opts.get("modes"), d.campbell.modes),
+                            d.campbell.compare_frozen_rpm, excitation_orders(d), d.operating.speed_range_rpm,
+                            bool(opts.get("exact")), progress, operating_rpm=d.operating.speed_rpm)
+        res = st.hot
+        if st.incomplete_reason:  # the speeds computed before a failure: written, marked incomplete
+            run = dataclasses.replace(run, complete=False, incomplete_reason=st.incomplete_reason)
+        paths = [write_campbell(outdir / "campbell.h5", run, res, st.frozen, st.frozen_rpm, st.cold, st.stiffness,
+                                operating_rpm=st.operating_rpm)]
     if plots_wanted(opts):
         paths.append(draw(outdir / "campbell.png", campbell_figure, res, operating_rpm=d.operating.speed_rpm or None,
-                          teeth=cutter_teeth(d), speed_limit_rpm=_limit(loaded)))
+                          teeth=cutter_teeth(d), speed_limit_rpm=_limit(limit)))
         if st.frozen is not None:
             paths.append(draw(outdir / "campbell_frozen.png", campbell_frozen_figure, res, st.frozen, st.frozen_rpm))
         if st.cold is not None:
@@ -88,11 +91,30 @@ def run_campbell(loaded, outdir, run, opts, progress):
     return Written(st, tuple(paths))
 
 
-def _limit(loaded) -> float | None:
-    """The highest speed the spindle runs at its thermal equilibrium (its thermal speed limit), or None."""
-    from .common import thermal_speed_limit
+def _limit_aside(loaded, wanted: bool):
+    """The spindle's thermal speed limit a figure shades above, solved meanwhile in a forked process
+    (``common.thermal_speed_limit_aside``) when figures are wanted; nothing otherwise."""
+    from ..analysis.aside import Known
+    from .common import thermal_speed_limit_aside
 
-    lim = thermal_speed_limit(loaded)
+    return thermal_speed_limit_aside(loaded) if wanted else Known(None)
+
+
+@contextlib.contextmanager
+def _cancelled_on_error(pending):
+    """The computation set aside stopped when what runs meanwhile fails or is interrupted."""
+    try:
+        yield
+    except BaseException:
+        pending.cancel()
+        raise
+
+
+def _limit(pending) -> float | None:
+    """The highest speed the spindle runs at its thermal equilibrium (its thermal speed limit), or None, from
+    :func:`_limit_aside`'s pending result."""
+    with _cancelled_on_error(pending):
+        lim = pending.result()
     return None if lim is None else lim[0]
 
 
@@ -145,9 +167,12 @@ def run_unbalance(loaded, outdir, run, opts, progress):
     require_rotor(loaded, "unbalance")
     d = loaded.deck
     u = require_section(loaded, "unbalance", "unbalance", "node, amount_g_mm, output, speeds_rpm")
-    res = solve_unbalance(operating_points(loaded), value_range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6, u.phase_deg,
-                          u.output.node, u.output.dof, refine=True, operating=d.operating.speed_range_rpm)
-    paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
+    limit = _limit_aside(loaded, plots_wanted(opts))
+    with _cancelled_on_error(limit):
+        res = solve_unbalance(operating_points(loaded), value_range(u.speeds_rpm), u.node, u.amount_g_mm * 1e-6,
+                              u.phase_deg, u.output.node, u.output.dof, refine=True,
+                              operating=d.operating.speed_range_rpm)
+        paths = [write_unbalance(outdir / "unbalance.h5", run, res)]
     if plots_wanted(opts):
-        paths.append(draw(outdir / "unbalance.png", unbalance_figure, res, speed_limit_rpm=_limit(loaded)))
+        paths.append(draw(outdir / "unbalance.png", unbalance_figure, res, speed_limit_rpm=_limit(limit)))
     return Written(res, tuple(paths))

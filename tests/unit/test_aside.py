@@ -88,3 +88,45 @@ def test_chatter_computed_aside_is_the_serial_chatter(tmp_path, monkeypatch):
         assert np.array_equal(x.limit_depth_m, y.limit_depth_m, equal_nan=True)
         assert np.array_equal(x.chatter_frequency_hz, y.chatter_frequency_hz, equal_nan=True)
     assert a.result.recommendation == b.result.recommendation
+
+
+KILLED_PARENT = """
+import os, sys, time
+from spindlesim.analysis.aside import Aside
+
+def pid_then_sleep():
+    print(os.getpid(), flush=True)
+    time.sleep(600)
+
+pending = Aside(pid_then_sleep)
+time.sleep(600)
+"""
+
+
+@pytest.mark.skipif(not aside.available() or not os.path.isdir("/proc"), reason="no fork here, or no /proc")
+def test_a_child_exits_when_its_parent_is_killed():
+    """A killed command (SIGKILL: nothing of it runs) leaves no child set aside waiting for ever: the child's
+    watchdog sees its parent gone within its period (0.5 s)."""
+    import signal
+    import subprocess
+    import sys
+
+    proc = subprocess.Popen([sys.executable, "-c", KILLED_PARENT], stdout=subprocess.PIPE, text=True)
+    child = int(proc.stdout.readline())  # the child prints its pid from inside the computation
+    assert os.path.isdir(f"/proc/{child}")
+    proc.send_signal(signal.SIGKILL)
+    proc.wait(10)
+    deadline = time.monotonic() + 10.0
+    while os.path.isdir(f"/proc/{child}") and time.monotonic() < deadline:
+        try:  # a zombie until its new parent reaps it: gone as far as work is concerned
+            with open(f"/proc/{child}/stat") as f:
+                if f.read().split(") ")[-1].startswith("Z"):
+                    break
+        except OSError:
+            break
+        time.sleep(0.05)
+    alive = os.path.isdir(f"/proc/{child}")
+    if alive:
+        with open(f"/proc/{child}/stat") as f:
+            alive = not f.read().split(") ")[-1].startswith("Z")
+    assert not alive, "the child outlived its parent"

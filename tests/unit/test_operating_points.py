@@ -22,8 +22,11 @@ DECKS = Path(__file__).parents[2] / "decks"
 
 @pytest.fixture
 def counted(monkeypatch):
-    """Counts of shaft assemblies and static-state solves, wherever they are asked for."""
+    """Counts of shaft assemblies and static-state solves, wherever they are asked for (in this process: a sweep's
+    states are not shared with a child here, whose solves these counts would not see; tests/unit/
+    test_shared_sweep.py counts a shared one)."""
     counts = {"assemblies": 0, "solves": [], "speeds": []}
+    monkeypatch.setattr(points_module, "SHARE_MIN", 10**9)
     real_assemble, real_state = operating.assemble_shaft, points_module.operating_state
 
     def assemble(rotor):

@@ -245,6 +245,14 @@ class ReynoldsSolver:
         self._cos_mid, self._sin_mid = np.cos(self._mid_theta), np.sin(self._mid_theta)
         # the faces' nodes that are unknowns (index -1: a Dirichlet boundary), for np.bincount
         self._free = tuple((idx >= 0, idx[idx >= 0]) for idx in (cl, cr, lo, hi))
+        # what the derivatives and the flows of a solve take from the grid alone
+        self._d_rhs = tuple(self._face_divergence(6.0 * -cq_c * g.cf_w) for cq_c in (self._cos_cf, self._sin_cf))
+        self._squeeze_rhs = tuple(12.0 * cq_n * g.node_area for cq_n in (self._cos_n, self._sin_n))
+        ent = np.flatnonzero(g.cf_entry)
+        self._entry = ent
+        self._entry_at = (g.cf_land[ent], g.cf_theta[ent] - 0.5 * g.cf_dtheta[ent])
+        self._entry_first = np.isin(ent, ent[g.node_j[np.maximum(g.cf_right[ent], 0)] == 0])
+        self._edge = np.flatnonzero(g.af_edge)
 
     # -- assembly -------------------------------------------------------------
     def _conductances(self, Hc: np.ndarray, Ha: np.ndarray):
@@ -398,16 +406,14 @@ class ReynoldsSolver:
         jv = np.zeros((2, 2))
         if idx.size:
             rhs = []
-            for cq_c, cq_a, cq_n in ((self._cos_cf, self._cos_af, self._cos_n),
-                                     (self._sin_cf, self._sin_af, self._sin_n)):
-                dHc, dHa = -cq_c, -cq_a
-                db = self._face_divergence(6.0 * dHc * g.cf_w)
+            for cq_c, cq_a, db in ((self._cos_cf, self._cos_af, self._d_rhs[0]),
+                                   (self._sin_cf, self._sin_af, self._d_rhs[1])):
+                dHc, dHa = -cq_c, -cq_a  # db: the divergence of 6 dHc w (the grid's, computed once)
                 dgc = 3.0 * Hc**2 * dHc * g.cf_w / g.cf_dtheta
                 dga = 3.0 * Ha**2 * dHa * g.af_dtheta / g.af_dzeta
                 rhs.append(db - self._apply_face_operator(dgc, dga, P))
-            for cq_n in (self._cos_n, self._sin_n):
-                # b = -... - 12 dH/dtau * area with dH/dtau = -X' cos - Y' sin
-                rhs.append(12.0 * cq_n * g.node_area)
+            # b = -... - 12 dH/dtau * area with dH/dtau = -X' cos - Y' sin
+            rhs.extend(self._squeeze_rhs)
             R = np.stack([r[idx] for r in rhs], axis=1)
             dP = lu(R)
             c, s = self._cos_n[idx] * wgt[idx], self._sin_n[idx] * wgt[idx]
@@ -426,8 +432,8 @@ class ReynoldsSolver:
         qc = (6.0 * Hc * g.cf_w - gc * dPc) / 12.0
         # inlet flow at the land's leading edge (theta_0, P_0 = 0): Couette flow with
         # H(theta_0) and a second-order one-sided pressure gradient (4 P1 - P2)/(2 dth)
-        ent = np.flatnonzero(g.cf_entry)
-        H0 = _film_at(geo, g.cf_land[ent], g.cf_theta[ent] - 0.5 * g.cf_dtheta[ent], X, Y)
+        ent = self._entry
+        H0 = _film_at(geo, *self._entry_at, X, Y)
         p1 = Pf[g.cf_right[ent]]
         p2 = Pf[g.cf_right[ent + g.n_axial]]
         dp0 = (4.0 * p1 - p2) / (2.0 * g.cf_dtheta[ent])
@@ -435,16 +441,15 @@ class ReynoldsSolver:
         # Couette flow through the edge strip zeta in [L/D - dz/2, L/D] (P = 0 there),
         # which belongs to no control volume
         dz = g.half_width / g.n_axial
-        first = ent[g.node_j[np.maximum(g.cf_right[ent], 0)] == 0]
-        inlet += float(2.0 * np.sum(0.5 * H0[np.isin(ent, first)] * 0.5 * dz))
+        inlet += float(2.0 * np.sum(0.5 * H0[self._entry_first] * 0.5 * dz))
         # side leakage through the edges: -H^3/12 dP/dzeta at zeta = L/D with the
         # second-order one-sided gradient (P_edge = 0): (4 P_{m-1} - P_{m-2}) / (2 dz)
-        edge = np.flatnonzero(g.af_edge)
+        edge = self._edge
         pm1 = Pf[g.af_low[edge]]
         pm2 = Pf[g.af_low[edge - 1]]
         side = float(2.0 * np.sum(Ha[edge] ** 3 * (4.0 * pm1 - pm2) / (2.0 * g.af_dzeta[edge])
                                   * g.af_dtheta[edge]) / 12.0)
-        if not np.any(g.cf_entry):
+        if not ent.size:
             # 360 deg film closed on itself (feed="periodic", not the default): there is
             # no leading edge; report the largest circumferential flow through any
             # section (an estimate of the flow carried round, not validated)

@@ -22,6 +22,7 @@ class LinearBearing(BearingBase):
     K_N_m: np.ndarray  # (n, 2, 2)
     C_Ns_m: np.ndarray  # (n, 2, 2)
     dof_names: tuple[str, ...] = RADIAL
+    iterative = False  # the contract: a linear reaction, nothing to solve at an operating point
 
     def coefficients(self, speed: float) -> tuple[np.ndarray, np.ndarray]:
         if len(self.speeds_rad_s) == 1:
