@@ -169,3 +169,32 @@ def test_a_secant_search_that_does_not_settle_hands_over_to_the_bracket():
     warm = solve_thermal(b.solver, b.viscosity, 1.05 * OMEGA, load, b.thermal, near=misleading)
     ref = solve_thermal(b.solver, b.viscosity, 1.05 * OMEGA, load, b.thermal)
     assert abs(warm.temperature_mean_C - ref.temperature_mean_C) < 2e-6
+
+
+@pytest.mark.parametrize("rpm, films", [(200.0, 4), (1000.0, 6), (2170.0, 7), (5000.0, 8), (12000.0, 9)])
+def test_a_cold_search_equals_brents_root(rpm, films):
+    """Without a neighbour the search takes secant steps from the inlet temperature (from the eq. 12 temperature at
+    its viscosity); its root equals Brent's method's on the same balance to a tight 1e-10 degC (scipy's brentq,
+    called here: an independent search) within the search's 1e-6 degC.  Film solutions measured on this bearing
+    (400 N): 4, 6, 7 at 200, 1,000 and 2,170 rpm (the bracket and Brent's method took 5, 7 and 7); at 5,000 and
+    12,000 rpm the first step leaves the temperature range and the bracket and Brent's method decide (8 and 9, as
+    before)."""
+    from scipy.optimize import brentq
+
+    from spindlesim.bearings.fluidfilm import thermal
+    from spindlesim.bearings.fluidfilm.performance import operating_point
+
+    b = seed_bearing()
+    load = np.array([0.0, -400.0])
+    w = rpm * math.pi / 30
+    got = thermal.solve_thermal(b.solver, b.viscosity, w, load, b.thermal)
+    aA = b.thermal.conductance(b.solver.geometry)
+
+    def g(theta):
+        film = operating_point(b.solver, b.viscosity(theta), w, load, b.thermal.density_kg_m3)
+        return thermal._balance(b.thermal, aA, film)[0] - theta
+
+    lo = min(b.thermal.inlet_C, b.thermal.ambient_C)  # heating there (g > 0); cooling 1 degC above the root found
+    ref = brentq(g, lo, got.temperature_mean_C + 1.0, xtol=1e-10, rtol=1e-12)
+    assert abs(got.temperature_mean_C - ref) <= 1e-6
+    assert got.iterations == films

@@ -10,8 +10,9 @@ which gives the mean film temperature explicitly for a given viscosity (eq. 12):
     theta = [(1 - lambda)(H + a A theta_E) + c rho q theta_i] / [c rho q + a A (1 - lambda)]
 
 The viscosity at ``theta`` (Walther, eq. 13-14) changes H and q, so the equilibrium is the
-root of ``g(theta) = theta_12(mu(theta)) - theta``, bracketed and solved with
-:func:`scipy.optimize.brentq`.
+root of ``g(theta) = theta_12(mu(theta)) - theta``, found by secant steps (from a neighbouring
+equilibrium, or from the inlet temperature), bracketed and solved with :func:`scipy.optimize.brentq`
+where they do not settle (scipy.optimize is imported then only: a fifth of a command's start-up).
 
 Choices (documented in docs/theory.md):
 
@@ -38,7 +39,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from spindlesim.bearings.fluidfilm.equilibrium import EquilibriumError
 from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
@@ -51,6 +51,9 @@ log = logging.getLogger(__name__)
 
 #: highest mean film temperature tried when bracketing the equilibrium [degC]
 MAX_TEMPERATURE_C = 250.0
+#: film solutions the secant steps may take before a bracket and Brent's method decide (from a neighbour three are
+#: usual; from a far one, e.g. the first speed of a sweep's second half, or the inlet temperature, five to seven)
+SECANT_EVALUATIONS = 8
 
 
 class ThermalEquilibriumError(RuntimeError):
@@ -122,7 +125,8 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     speed of a Campbell diagram): the search starts at its temperature (or at ``guess_C``, e.g.
     extrapolated from two neighbours) with secant steps from its balance slope, usually three film
     solutions, and its journal position and film start the first one; a secant search that does not
-    settle hands over to a bracket and Brent's method, as does a search without a neighbour.  The
+    settle hands over to a bracket and Brent's method.  A search without a neighbour takes secant steps
+    from the inlet temperature (at most ``SECANT_EVALUATIONS`` film solutions), then the same.  The
     root is found to ``xtol`` degC either way (1e-6 degC: the result does not depend on where the
     search started).
     """
@@ -163,7 +167,7 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
             return _result(params, aA, film_at(found[0]), state["n"], found[1])
         bracket = _near_bracket(g, theta0)
         if bracket is not None:
-            theta = bracket[0] if bracket[0] == bracket[1] else brentq(g, *bracket, xtol=xtol, rtol=1e-12)
+            theta = bracket[0] if bracket[0] == bracket[1] else _brent(g, *bracket, xtol)
             return _result(params, aA, film_at(theta), state["n"])
     lo = min(params.inlet_C, params.ambient_C)
     try:
@@ -174,6 +178,11 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
             f"(viscosity {viscosity(lo):.4g} Pa s): {exc}") from exc
     if glo <= 0:  # cannot happen with positive friction heat; guard anyway
         raise ThermalEquilibriumError(f"no heating at {lo:.1f} degC (g = {glo:.3g})")
+    # secant steps from the eq. 12 temperature at the inlet's viscosity (the root lies below it): five or six film
+    # solutions where the bracket and Brent's method below take seven or more
+    found = _secant_root(g, lo, -1.0, xtol)
+    if found is not None:
+        return _result(params, aA, film_at(found[0]), state["n"], found[1])
     hi, step, ghi = lo, 10.0, glo
     tried = [lo]
     first = True
@@ -202,8 +211,15 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
         if ghi > 0:
             lo, glo = hi, ghi
             step *= 2.0
-    theta = brentq(g, lo, hi, xtol=xtol, rtol=1e-12)
+    theta = _brent(g, lo, hi, xtol)
     return _result(params, aA, film_at(theta), state["n"])
+
+
+def _brent(g, lo: float, hi: float, xtol: float) -> float:
+    """The root of g in the bracket [lo, hi] by Brent's method (scipy's), to ``xtol``."""
+    from scipy.optimize import brentq
+
+    return brentq(g, lo, hi, xtol=xtol, rtol=1e-12)
 
 
 def _result(params: ThermalParameters, aA: float, film: FilmResult, n: int,
@@ -213,7 +229,7 @@ def _result(params: ThermalParameters, aA: float, film: FilmResult, n: int,
     return ThermalResult(th, tho, params.inlet_C, params.ambient_C, H, H1, H2, q, aA, False, n, film, slope)
 
 
-def _secant_root(g, theta0: float, slope: float, xtol: float, evaluations: int = 5):
+def _secant_root(g, theta0: float, slope: float, xtol: float, evaluations: int = SECANT_EVALUATIONS):
     """(root, slope) of g from ``theta0`` by secant steps, the first one along ``slope`` (a neighbouring
     equilibrium's dg/dtheta, else -1: the balance temperature moves less than the trial one); None when
     the steps do not settle within ``evaluations`` film solutions, leave the temperature range, or g
