@@ -253,6 +253,7 @@ class ReynoldsSolver:
         self._entry_at = (g.cf_land[ent], g.cf_theta[ent] - 0.5 * g.cf_dtheta[ent])
         self._entry_first = np.isin(ent, ent[g.node_j[np.maximum(g.cf_right[ent], 0)] == 0])
         self._edge = np.flatnonzero(g.af_edge)
+        self._last_pattern = None  # (full-film set's bytes, its pattern): ``_pattern``
 
     # -- assembly -------------------------------------------------------------
     def _conductances(self, Hc: np.ndarray, Ha: np.ndarray):
@@ -299,6 +300,26 @@ class ReynoldsSolver:
             diag += np.bincount(idx, weights=val[m], minlength=n)
         return diag
 
+    def _pattern(self, inactive: np.ndarray):
+        """(unknowns of the full-film set, faces inside it, their lower and upper unknown, the half bandwidth, the
+        faces' places in the band storage) of a full-film set: the last one's kept (a warm solve's set seldom
+        changes between the solves of an equilibrium or a sweep)."""
+        key = inactive.tobytes()
+        last = self._last_pattern  # read once: another thread may replace it meanwhile
+        if last is not None and last[0] == key:
+            return last[1]
+        n = self.grid.n_unknown
+        idx = np.flatnonzero(inactive)
+        mp = np.full(n + 1, -1, dtype=np.int64)  # mp[-1] (Dirichlet) stays -1
+        mp[idx] = np.arange(idx.size)
+        li, ri = mp[self._off_l], mp[self._off_r]
+        ok = (li >= 0) & (ri >= 0)
+        i, j = np.minimum(li, ri)[ok], np.maximum(li, ri)[ok]
+        u = int((j - i).max()) if j.size else 0
+        pattern = (idx, ok, i, j, u, (u + i - j, j))
+        self._last_pattern = (key, pattern)
+        return pattern
+
     def _factor(self, gc: np.ndarray, ga: np.ndarray, diag: np.ndarray, inactive: np.ndarray):
         """Factorise A restricted to the full-film set; returns a solve function.
 
@@ -308,20 +329,13 @@ class ReynoldsSolver:
         a sparse LU.
         """
         g = self.grid
-        n = g.n_unknown
-        idx = np.flatnonzero(inactive)
+        idx, ok, i, j, u, band = self._pattern(inactive)
         m = idx.size
-        mp = np.full(n + 1, -1, dtype=np.int64)  # mp[-1] (Dirichlet) stays -1
-        mp[idx] = np.arange(m)
-        li, ri = mp[self._off_l], mp[self._off_r]
-        ok = (li >= 0) & (ri >= 0)
-        i, j = np.minimum(li, ri)[ok], np.maximum(li, ri)[ok]
         v = -np.concatenate([gc, ga])[ok]
-        u = int((j - i).max()) if j.size else 0
         if u <= 4 * g.n_axial:
             ab = np.zeros((u + 1, m))
             ab[u, :] = diag[idx]
-            ab[u + i - j, j] = v
+            ab[band] = v
             # LAPACK's banded Cholesky directly: what scipy.linalg.cholesky_banded and cho_solve_banded
             # call, without their per-call argument handling (a tenth of a warm Reynolds solve)
             cb, info = dpbtrf(ab, lower=0)
