@@ -12,7 +12,7 @@ single-threaded BLAS).
 
 Also `spindlesim chatter --map` (the stability map asked for), for the record.
 
-Usage: python benchmarks/bench_lobes.py [--runs N]
+Usage: python benchmarks/bench_lobes.py [--runs N] [--only WORDS]
 """
 
 from __future__ import annotations
@@ -32,6 +32,8 @@ MILL = ROOT / "decks" / "milling_spindle.yaml"
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--only", default="", help="comma-separated words: measure only the rows whose name has one "
+                    "(e.g. --only floor,campbell); the ten tools alone take about four minutes")
     args = ap.parse_args()
     exe = spindlesim_exe()
     tmp = pathlib.Path(tempfile.mkdtemp())
@@ -52,6 +54,8 @@ def main() -> None:
     ]
     got = {}
     print(f"{'command':30s} {'median s':>9s} {'min':>7s} {'max':>7s} {'cpu s':>7s}", flush=True)
+    words = [w for w in args.only.split(",") if w]
+    rows = [r for r in rows if not words or any(w in r[0] for w in words)]
     for name, argv in rows:  # the ten tools once, without a warm-up: about three minutes a run
         long = name.startswith("tools")
         med, lo, hi, cpu, rc, err = time_process(argv, tmp / "out", 1 if long else args.runs, warmup=0 if long else 1)
