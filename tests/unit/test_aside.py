@@ -111,7 +111,13 @@ def test_a_child_exits_when_its_parent_is_killed():
     import subprocess
     import sys
 
+    import select
+
     proc = subprocess.Popen([sys.executable, "-c", KILLED_PARENT], stdout=subprocess.PIPE, text=True)
+    ready, _, _ = select.select([proc.stdout], [], [], 120.0)  # never wait for ever
+    if not ready:
+        proc.kill()
+        pytest.fail("the child set aside did not start within 120 s")
     child = int(proc.stdout.readline())  # the child prints its pid from inside the computation
     assert os.path.isdir(f"/proc/{child}")
     proc.send_signal(signal.SIGKILL)
