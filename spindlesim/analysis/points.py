@@ -8,7 +8,8 @@ is built from a rotor and
   nonlinear reaction, its operating point frozen), keeps it, and along a list of speeds starts each from
   its neighbour's (:meth:`along`) with one failure policy: what was solved is kept, the failing point is
   named (a bearing that cannot carry its load at rest is left out at 0 rpm only, with a warning); a
-  Ctrl-C keeps what was solved too, marked as interrupted;
+  Ctrl-C keeps what was solved too, marked as interrupted; a long list of bearings solved by iteration is
+  shared with a forked child (the second half; equal states to the solvers' tolerances, the same policy);
 * gives the linear system at a state (:meth:`system`, seed 003 eq. 21) and, for many speeds, one reduced
   basis checked against the full model with a criterion given by the analysis (:meth:`basis`: the
   Campbell diagram's roots, the tool point's dominant modes), built once per criterion.
