@@ -263,9 +263,10 @@ class OperatingPoints:
         return None
 
 
-def _solve_run(points: OperatingPoints, speeds: np.ndarray) -> list[OperatingState]:
-    """The states at ``speeds``, each from the previous one's, the first from the states known (what the child of
-    :meth:`OperatingPoints.along` computes): up to the first that fails (this process goes on from there).  The
+def _solve_run(points: OperatingPoints, speeds: np.ndarray) -> tuple[list, list, list]:
+    """(speeds [rpm], states, thermal states or None) at ``speeds``, each state from the previous one's, the first
+    from the states known (what the child of :meth:`OperatingPoints.along` computes): up to the first that fails
+    (this process goes on from there).  The
     shaft's matrices are left out of what is sent back (this process has them; :meth:`OperatingPoints._received` puts
     them back), with the thermal states that set them."""
     out: list[OperatingState] = []
