@@ -34,6 +34,16 @@ def film_force_scale(geometry: BearingGeometry, viscosity_Pa_s: float, speed_rad
     return viscosity_Pa_s * speed_rad_s * R**4 / geometry.clearance_m**2
 
 
+def friction_torque(geometry: BearingGeometry, viscosity_Pa_s: float, speed_rad_s: float, film) -> float:
+    """mu omega R^4 / Cb * I_f [N m] of a dimensionless film solution."""
+    return viscosity_Pa_s * speed_rad_s * geometry.radius_m**4 / geometry.clearance_m * film.friction
+
+
+def flow(geometry: BearingGeometry, speed_rad_s: float, dimensionless: float) -> float:
+    """omega R^2 Cb * I_q [m^3/s] of a dimensionless flow."""
+    return speed_rad_s * geometry.radius_m**2 * geometry.clearance_m * dimensionless
+
+
 def equilibrium(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: float,
                 load_N: np.ndarray, initial=None, full_film_guess=None, initial_solution=None) -> Equilibrium:
     """Journal equilibrium under the load ``load_N`` (force of the shaft on the bearing).
@@ -65,7 +75,7 @@ def operating_point(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: 
     mu, om = viscosity_Pa_s, speed_rad_s
     N = om / (2 * math.pi)
     K, B = coef.dimensional(film.jac_position, film.jac_velocity, mu, om, R, Cb)
-    torque = mu * om * R**4 / Cb * film.friction
+    torque = friction_torque(geo, mu, om, film)
     ecc = float(np.hypot(eq.X, eq.Y))
     att = math.degrees(math.atan2(eq.Y, eq.X) - math.atan2(load[1], load[0]))
     att = (att + 180.0) % 360.0 - 180.0
@@ -85,8 +95,8 @@ def operating_point(solver: ReynoldsSolver, viscosity_Pa_s: float, speed_rad_s: 
         friction_torque_Nm=torque,
         power_loss_W=torque * om,
         friction_coefficient=torque / (R * W),
-        inlet_flow_m3_s=om * R**2 * Cb * film.inlet_flow,
-        side_flow_m3_s=om * R**2 * Cb * film.side_flow,
+        inlet_flow_m3_s=flow(geo, om, film.inlet_flow),
+        side_flow_m3_s=flow(geo, om, film.side_flow),
         reynolds_number=density_kg_m3 * om * R * Cb / mu,
         K_N_m=K,
         C_Ns_m=B,

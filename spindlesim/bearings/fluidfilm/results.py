@@ -69,6 +69,8 @@ class ThermalResult:
     oil_flow_m3_s: float  # q of eq. 7
     housing_conductance_W_K: float  # a_hat * A
     isoviscous: bool
+    #: film solutions the search took (each a Reynolds solution in the joint steps from a neighbour, each a
+    #: journal equilibrium at a trial temperature in the nested search)
     iterations: int
     film: FilmResult
     #: dg/dtheta at the equilibrium, g(theta) = balance temperature - trial temperature (negative; NaN when

@@ -10,9 +10,12 @@ which gives the mean film temperature explicitly for a given viscosity (eq. 12):
     theta = [(1 - lambda)(H + a A theta_E) + c rho q theta_i] / [c rho q + a A (1 - lambda)]
 
 The viscosity at ``theta`` (Walther, eq. 13-14) changes H and q, so the equilibrium is the
-root of ``g(theta) = theta_12(mu(theta)) - theta``, found by secant steps (from a neighbouring
-equilibrium, or from the inlet temperature), bracketed and solved with :func:`scipy.optimize.brentq`
-where they do not settle (scipy.optimize is imported then only: a fifth of a command's start-up).
+root of ``g(theta) = theta_12(mu(theta)) - theta``.  From a neighbouring equilibrium (the previous speed
+of a sweep) the temperature and the journal position are stepped together, one film solution a step
+(:func:`_joint_root`); otherwise, and where those steps do not settle, the nested search: secant steps on
+g (from the neighbour, or from the inlet temperature), each trial temperature with the journal's own
+equilibrium, bracketed and solved with :func:`scipy.optimize.brentq` where they do not settle
+(scipy.optimize is imported then only: a fifth of a command's start-up).
 
 Choices (documented in docs/theory.md):
 
@@ -42,7 +45,7 @@ import numpy as np
 
 from spindlesim.bearings.fluidfilm.equilibrium import EquilibriumError
 from spindlesim.bearings.fluidfilm.geometry import BearingGeometry
-from spindlesim.bearings.fluidfilm.performance import operating_point
+from spindlesim.bearings.fluidfilm.performance import film_force_scale, flow, friction_torque, operating_point
 from spindlesim.bearings.fluidfilm.reynolds import ReynoldsError, ReynoldsSolver
 from spindlesim.bearings.fluidfilm.results import FilmResult, ThermalResult
 from spindlesim.bearings.fluidfilm.viscosity import ConstantViscosity
@@ -54,6 +57,8 @@ MAX_TEMPERATURE_C = 250.0
 #: film solutions the secant steps may take before a bracket and Brent's method decide (from a neighbour three are
 #: usual; from a far one, e.g. the first speed of a sweep's second half, or the inlet temperature, five to seven)
 SECANT_EVALUATIONS = 8
+#: film solutions the joint steps on temperature and journal position may take before the nested search decides
+JOINT_EVALUATIONS = 8
 
 
 class ThermalEquilibriumError(RuntimeError):
@@ -103,14 +108,19 @@ class ThermalParameters:
         return a * A
 
 
+def _mean_temperature(p: ThermalParameters, aA: float, H: float, q: float) -> tuple[float, float]:
+    """(mean temperature of eq. 12, c rho q) for the friction heat ``H`` [W] and the oil flow ``q`` [m^3/s]."""
+    lam = p.mixing_lambda
+    crq = p.specific_heat_J_kgK * p.density_kg_m3 * q
+    return ((1 - lam) * (H + aA * p.ambient_C) + crq * p.inlet_C) / (crq + aA * (1 - lam)), crq
+
+
 def _balance(p: ThermalParameters, aA: float, film: FilmResult):
     """Mean temperature of eq. 12 and the heat flows for one film state."""
     H = film.power_loss_W
     q = film.side_flow_m3_s if p.oil_flow == "side" else film.inlet_flow_m3_s
-    lam = p.mixing_lambda
-    crq = p.specific_heat_J_kgK * p.density_kg_m3 * q
-    theta = ((1 - lam) * (H + aA * p.ambient_C) + crq * p.inlet_C) / (crq + aA * (1 - lam))
-    theta_out = (theta - lam * p.inlet_C) / (1 - lam)
+    theta, crq = _mean_temperature(p, aA, H, q)
+    theta_out = (theta - p.mixing_lambda * p.inlet_C) / (1 - p.mixing_lambda)
     return theta, theta_out, H, crq * (theta_out - p.inlet_C), aA * (theta - p.ambient_C), q
 
 
@@ -123,9 +133,10 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
     :class:`ConstantViscosity` gives an isoviscous film whose temperatures follow from
     eq. 12 without feedback.  ``near`` is the equilibrium of a neighbouring state (the previous
     speed of a Campbell diagram): the search starts at its temperature (or at ``guess_C``, e.g.
-    extrapolated from two neighbours) with secant steps from its balance slope, usually three film
-    solutions, and its journal position and film start the first one; a secant search that does not
-    settle hands over to a bracket and Brent's method.  A search without a neighbour takes secant steps
+    extrapolated from two neighbours), its journal position and its film, with joint steps on the
+    temperature and the journal position (:func:`_joint_root`, two to four film solutions); where they
+    do not settle, with secant steps from its balance slope, each trial temperature with the journal's
+    equilibrium; a secant search that does not settle hands over to a bracket and Brent's method.  A search without a neighbour takes secant steps
     from the inlet temperature (at most ``SECANT_EVALUATIONS`` film solutions), then the same.  The
     root is found to ``xtol`` degC either way (1e-6 degC: the result does not depend on where the
     search started).
@@ -162,6 +173,13 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
 
     if near is not None:
         theta0 = near.temperature_mean_C if guess_C is None else guess_C
+        joint, spent = _joint_root(solver, viscosity, speed_rad_s, load, params, aA, near, theta0, xtol)
+        if joint is not None:
+            theta, x, sol, slope = joint
+            state["pos"], state["set"], state["sol"] = x * geo.clearance_m, sol.full_film, sol
+            film = film_at(theta)  # the Newton iteration starts converged: no film solution
+            return _result(params, aA, film, spent, slope)
+        state["n"] = spent
         found = _secant_root(g, theta0, near.balance_slope, xtol)
         if found is not None:
             return _result(params, aA, film_at(found[0]), state["n"], found[1])
@@ -213,6 +231,58 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
             step *= 2.0
     theta = _brent(g, lo, hi, xtol)
     return _result(params, aA, film_at(theta), state["n"])
+
+
+def _joint_root(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load: np.ndarray, p: ThermalParameters,
+                aA: float, near: ThermalResult, theta0: float, xtol: float, tol: float = 1e-9,
+                evaluations: int = JOINT_EVALUATIONS):
+    """((temperature, journal position (X, Y), its film, dg/dtheta), film solutions) of the equilibrium by one
+    film solution per step on the temperature and the journal position together; (None, film solutions)
+    where it does not settle (then the nested search decides, from the neighbour as before).
+
+    The nested search solves the journal's equilibrium (a Newton iteration, two or three film solutions) at
+    every trial temperature.  Here each step takes the trial temperature's secant step (from the neighbour's
+    slope dg/dtheta, then the secant of the steps' balance temperatures) and the journal's Newton step towards
+    the load at the new temperature's viscosity from the same film, whose force Jacobian does not depend on
+    the viscosity (the film force is mu omega R^4 / Cb^2 times the dimensionless one).  It stops where both
+    the nested search and the journal's Newton iteration would: the force within ``tol`` of the load and the
+    secant's distance to the root within ``xtol``; the film is then the operating point's at that viscosity.
+    The neighbour's film starts it (no solution for the first step)."""
+    geo = solver.geometry
+    s = near.balance_slope
+    sol = near.film.solution
+    if geo.axisymmetric or sol is None or not (math.isfinite(s) and s < 0.0):
+        return None, 0
+    x = np.array([sol.X, sol.Y])
+    theta, prev, n = theta0, None, 0
+    try:
+        while True:
+            mu = viscosity(theta)
+            target = -load / film_force_scale(geo, mu, speed_rad_s)
+            res = sol.force - target
+            H = friction_torque(geo, mu, speed_rad_s, sol) * speed_rad_s
+            q = flow(geo, speed_rad_s, sol.side_flow if p.oil_flow == "side" else sol.inlet_flow)
+            g = _mean_temperature(p, aA, H, q)[0] - theta
+            if prev is not None and theta != prev[0]:
+                s = (g - prev[1]) / (theta - prev[0])
+                if not s < 0.0:  # not the smooth fall the steps rely on
+                    return None, n
+            if float(np.hypot(*res)) <= tol * float(np.hypot(*target)) and abs(g / s) <= xtol:
+                return (theta, x, sol, s), n
+            if n >= evaluations:
+                return None, n
+            prev, theta = (theta, g), theta - g / s
+            if not -50.0 <= theta <= MAX_TEMPERATURE_C:
+                return None, n
+            target = -load / film_force_scale(geo, viscosity(theta), speed_rad_s)
+            step = -np.linalg.solve(sol.jac_position, sol.force - target)
+            if float(np.hypot(*step)) > 0.25:  # far from the neighbour: the nested search's line search decides
+                return None, n
+            x = x + step
+            sol = solver.solve(x[0], x[1], sol.full_film)
+            n += 1
+    except (ReynoldsError, np.linalg.LinAlgError):
+        return None, n
 
 
 def _brent(g, lo: float, hi: float, xtol: float) -> float:
