@@ -133,3 +133,25 @@ def test_film_heights_from_the_precomputed_part_equal_the_film_formula():
         assert np.array_equal(Hc, _film_at(geo, g.cf_land, g.cf_theta, X, Y))
         assert np.array_equal(Ha, _film_at(geo, g.af_land, g.af_theta, X, Y))
         assert np.array_equal(Hmid, _film_at(geo, s._mid_land, s._mid_theta, X, Y))
+
+
+def test_a_journal_touching_at_an_axial_face_only_is_reported_as_touching():
+    """A 3-lobe bore (seed 003: preload 0.5) at e/Cb 1.205 towards 80 deg: the film at the axial faces of a lobe's
+    minimum is negative (-2.6e-4 Cb) while the circumferential faces and the cell middles still have 4.5e-4 Cb.
+    The solver says the journal touches the bore (ReynoldsError, which the equilibrium's line search steps back
+    from).  It had solved on with a conductance H^3 < 0 there: here a film of no physical meaning, returned as if
+    solved; under an impossible load (2.4 MN on the 70 mm bearing) LAPACK's "leading minor not positive definite",
+    a bare LinAlgError out of the thermal equilibrium, where now the search reports that no equilibrium exists."""
+    import math
+
+    from spindlesim.bearings.fluidfilm.geometry import multilobe_geometry
+    from spindlesim.bearings.fluidfilm.reynolds import ReynoldsError, ReynoldsSolver
+
+    s = ReynoldsSolver(multilobe_geometry(0.069965, 0.069965, 12e-6, 0.5, 3), 96, 8)
+    X, Y = 1.205 * math.cos(math.radians(80.0)), 1.205 * math.sin(math.radians(80.0))
+    Hc = s._base_cf - X * s._cos_cf - Y * s._sin_cf
+    Ha = s._base_af - X * s._cos_af - Y * s._sin_af
+    Hm = s._base_mid - X * s._cos_mid - Y * s._sin_mid
+    assert Ha.min() < 0 < min(Hc.min(), Hm.min())  # the case: an axial face alone
+    with pytest.raises(ReynoldsError, match="touches the bore"):
+        s.solve(X, Y)

@@ -271,3 +271,29 @@ def test_joint_steps_from_a_far_neighbour_hand_over_to_the_nested_search():
     warm = thermal.solve_thermal(b.solver, b.viscosity, w, load, b.thermal, near=far)
     cold = thermal.solve_thermal(b.solver, b.viscosity, w, load, b.thermal)
     assert abs(warm.temperature_mean_C - cold.temperature_mean_C) < 2e-6
+
+
+def test_joint_steps_whose_film_is_refused_hand_over_to_the_nested_search(monkeypatch):
+    """Where the operating point at the joint steps' temperature is refused (the equilibrium's own checks, e.g. a
+    film thinner than it accepts), the nested search runs from the neighbour as it did before the joint steps and
+    says what it meets in its own words; here the refusal is planted once and the nested search's root is the
+    cold search's."""
+    from spindlesim.bearings.fluidfilm import thermal
+    from spindlesim.bearings.fluidfilm.equilibrium import EquilibriumError
+
+    b = seed_bearing()
+    load = np.array([0.0, -400.0])
+    near = thermal.solve_thermal(b.solver, b.viscosity, 0.98 * OMEGA, load, b.thermal)
+    real, calls = thermal.operating_point, []
+
+    def refused_once(*args, **kw):
+        calls.append(1)
+        if len(calls) == 1:
+            raise EquilibriumError("load too large: minimum film below 0.1 % of Cb")
+        return real(*args, **kw)
+
+    monkeypatch.setattr(thermal, "operating_point", refused_once)
+    got = thermal.solve_thermal(b.solver, b.viscosity, OMEGA, load, b.thermal, near=near)
+    monkeypatch.undo()
+    cold = thermal.solve_thermal(b.solver, b.viscosity, OMEGA, load, b.thermal)
+    assert len(calls) > 1 and abs(got.temperature_mean_C - cold.temperature_mean_C) < 2e-6

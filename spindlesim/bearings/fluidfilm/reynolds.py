@@ -369,7 +369,7 @@ class ReynoldsSolver:
         Hc = self._base_cf - X * self._cos_cf - Y * self._sin_cf
         Ha = self._base_af - X * self._cos_af - Y * self._sin_af
         Hmid = self._base_mid - X * self._cos_mid - Y * self._sin_mid
-        hmin = float(min(Hc.min(), Hmid.min()))
+        hmin = float(min(Hc.min(), Ha.min(), Hmid.min()))  # an axial face too: its conductance goes as H^3
         if hmin <= 0.0:
             raise ReynoldsError(f"journal position X={X:.4f}, Y={Y:.4f} (e/Cb {math.hypot(X, Y):.4f}) touches "
                                 f"the bore (min H {hmin:.3g})")

@@ -177,8 +177,12 @@ def solve_thermal(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load_N:
         if joint is not None:
             theta, x, sol, slope = joint
             state["pos"], state["set"], state["sol"] = x * geo.clearance_m, sol.full_film, sol
-            film = film_at(theta)  # the Newton iteration starts converged: no film solution
-            return _result(params, aA, film, spent, slope)
+            try:  # the Newton iteration starts converged: no film solution
+                return _result(params, aA, film_at(theta), spent, slope)
+            except (EquilibriumError, ReynoldsError):  # e.g. the film thinner than the equilibrium accepts:
+                # the nested search meets it too and says so as it always has
+                state["pos"], state["set"], state["sol"] = (near.film.position_m, near.film.full_film,
+                                                            near.film.solution)
         state["n"] = spent
         found = _secant_root(g, theta0, near.balance_slope, xtol)
         if found is not None:
