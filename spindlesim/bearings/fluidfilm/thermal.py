@@ -54,6 +54,8 @@ log = logging.getLogger(__name__)
 
 #: highest mean film temperature tried when bracketing the equilibrium [degC]
 MAX_TEMPERATURE_C = 250.0
+#: lowest mean film temperature a search step may try [degC]
+MIN_TEMPERATURE_C = -50.0
 #: film solutions the secant steps may take before a bracket and Brent's method decide (from a neighbour three are
 #: usual; from a far one, e.g. the first speed of a sweep's second half, or the inlet temperature, five to seven)
 SECANT_EVALUATIONS = 8
@@ -276,7 +278,7 @@ def _joint_root(solver: ReynoldsSolver, viscosity, speed_rad_s: float, load: np.
             if n >= evaluations:
                 return None, n
             prev, theta = (theta, g), theta - g / s
-            if not -50.0 <= theta <= MAX_TEMPERATURE_C:
+            if not MIN_TEMPERATURE_C <= theta <= MAX_TEMPERATURE_C:
                 return None, n
             target = -load / film_force_scale(geo, viscosity(theta), speed_rad_s)
             step = -np.linalg.solve(sol.jac_position, sol.force - target)
@@ -320,7 +322,7 @@ def _secant_root(g, theta0: float, slope: float, xtol: float, evaluations: int =
             if abs(g0 / s) <= xtol:
                 return t0, s
             t1 = t0 - g0 / s
-            if not (-50.0 <= t1 <= MAX_TEMPERATURE_C):
+            if not MIN_TEMPERATURE_C <= t1 <= MAX_TEMPERATURE_C:
                 return None
             g1 = g(t1)
             if t1 == t0 or g1 == g0:
@@ -345,7 +347,7 @@ def _near_bracket(g, theta0: float, tries: int = 4):
         step = g0 + math.copysign(0.01 + 0.1 * abs(g0), g0)
         a, ga = theta0, g0
         for _ in range(tries):
-            b = min(max(a + step, -50.0), MAX_TEMPERATURE_C)
+            b = min(max(a + step, MIN_TEMPERATURE_C), MAX_TEMPERATURE_C)
             gb = g(b)
             if ga * gb <= 0:
                 return (a, b) if a < b else (b, a)
