@@ -253,6 +253,19 @@ def test_joint_steps_find_the_nested_searchs_equilibria_in_fewer_film_solutions(
     assert calls["n"] <= 0.8 * n_nested, (calls["n"], n_nested)
     # every warm speed settled by the joint steps (their count is Reynolds solutions: two to six)
     assert max(r.iterations for r in joint[2:]) <= 6
+    # and each is the equilibrium by its definition, checked without either search: the film solved afresh (from
+    # the centred journal) at the viscosity of the temperature found carries the load, and eq. 12 at that film
+    # gives the same temperature back (within the search's 1e-6 degC times |dg/dtheta| ~ 1-2)
+    from spindlesim.bearings.fluidfilm import thermal
+    from spindlesim.bearings.fluidfilm.performance import operating_point
+
+    monkeypatch.undo()
+    aA = b.thermal.conductance(b.geometry)
+    for r in joint[5::11]:
+        f = operating_point(b.solver, b.viscosity(r.temperature_mean_C), r.film.speed_rad_s, load,
+                            b.thermal.density_kg_m3)
+        assert abs(thermal._balance(b.thermal, aA, f)[0] - r.temperature_mean_C) < 5e-6
+        np.testing.assert_allclose(f.position_m, r.film.position_m, rtol=0, atol=1e-7 * 12e-6)
 
 
 def test_joint_steps_from_a_far_neighbour_hand_over_to_the_nested_search():
