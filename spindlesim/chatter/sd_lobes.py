@@ -42,7 +42,7 @@ from scipy.optimize import minimize_scalar
 
 from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
-from .semi_discretization import N_MULTIPLIERS, SdProblem, workers
+from .semi_discretization import N_MULTIPLIERS, SdProblem, parallel_map, workers
 from .tool import ToolSeries, ToolSource, as_state_space, tool_series
 
 __all__ = ["semi_discretization_lobes", "CAP_FACTOR", "STEPS_IN_CUT", "HARD_MAX_STEPS"]
@@ -390,15 +390,16 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     models = [as_state_space(t, **(fit_options or {})) for t in used]
     notes = []
 
-    def zero_order(t):
-        return zero_order_lobes(process, t, speeds)
-
-    sd_models, model_note = models_for_sd(models, process.mean_directional()) if reduce_model else (models, "")
+    # each model's FRF on its own grid, once: the zero-order lobes and the model reduction's check both use it
+    frfs = parallel_map(lambda mdl: mdl.frf(), models)
+    sd_models, model_note = (models_for_sd(models, process.mean_directional(), frfs=frfs) if reduce_model
+                             else (models, ""))
     if model_note:
         notes.append(model_note)
     want_map = stability_map or depths_m is not None
     # the default depth range and the searches' guesses
-    zoa = zero_order(ToolSeries(speeds, tuple(models)) if per_speed else ToolSeries.constant(models[0]))
+    zoa = zero_order_lobes(process, ToolSeries(speeds, tuple(frfs)) if per_speed else ToolSeries.constant(frfs[0]),
+                           speeds)
     if depths_m is not None:
         grid = _Depths(np.sort(np.asarray(depths_m, float)), float(np.max(depths_m)), 0)
     elif depth_max_m is not None:

@@ -122,8 +122,10 @@ def _depth_curve(K0: np.ndarray, H: np.ndarray) -> np.ndarray:
     return np.where(re < 0, -0.5 / np.where(re < 0, re, -1.0), np.inf)
 
 
-def models_for_sd(models: list[ToolPointModel], K0: np.ndarray, span: float = 3.0) -> tuple[list, str]:
-    """The models the semi-discretization runs on (one, or one per speed) and a note saying which.
+def models_for_sd(models: list[ToolPointModel], K0: np.ndarray, span: float = 3.0,
+                  frfs: list | None = None) -> tuple[list, str]:
+    """The models the semi-discretization runs on (one, or one per speed) and a note saying which; ``frfs``
+    the models' FRFs on their own grids (``model.frf()``) where the caller has them already.
 
     The check: at every frequency of each model's mode-clustered grid where the depth curve
     -1 / (2 min Re lambda(w)) of the full model (lambda the eigenvalues of -K0 H(w); the zero-order
@@ -137,12 +139,13 @@ def models_for_sd(models: list[ToolPointModel], K0: np.ndarray, span: float = 3.
         return models, ""
     from .semi_discretization import parallel_map  # the speeds' models on the worker threads
 
-    def full(m):
-        md, w = _modal(m), 2 * np.pi * m.frequency_grid()
-        return md, w, _depth_curve(K0, m.receptance(w))
+    def full(i):
+        m = models[i]
+        frf = m.frf() if frfs is None else frfs[i]
+        return _modal(m), frf.omega, _depth_curve(K0, frf.H)
 
     try:
-        modal, grids, curves = (list(x) for x in zip(*parallel_map(full, models)))
+        modal, grids, curves = (list(x) for x in zip(*parallel_map(full, range(len(models)))))
     except (np.linalg.LinAlgError, ValueError):
         return models, ""
     masks = [np.isfinite(c) & (c <= span * c.min()) for c in curves]

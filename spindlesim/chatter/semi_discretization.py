@@ -342,40 +342,35 @@ class SdProblem:
             DK = self.U.T @ (Dm @ K) @ self.U  # [E, m, r, r]
             Yx = (np.eye(r) + DK) @ Cr[:, None]
             Yh = -DK
-        dt = (self.tau[s_idx] / m)[:, None, None, None]
+        dt = self.tau[s_idx] / m  # [E]
         BK = np.einsum("eak,eikl->eial", B, K)  # [E, m, n, 2]
         D = -BK @ self.U  # [E, m, n, r]
-        Ai = A[:, None] - D @ Cr[:, None]  # A + B K C, C = U Cr
-        # exp of [[A_i dt, D_i dt, 0], [0, 0, I_r], [0, 0, 0]] = [[P, Phi0 D, Phi1 D], ...] (Van Loan);
-        # steps out of cut (K_i = 0) share one exponential per evaluation
+        # exp of [[A_i dt, D_i dt, 0], [0, 0, I_r], [0, 0, 0]] = [[P, Phi0 D, Phi1 D], ...] (Van Loan),
+        # A_i = A + B K_i C (C = U Cr) on the steps in the cut; the steps out of it (K_i = 0: A_i = A, D_i = 0)
+        # share one exponential per evaluation
         E = len(s_idx)
         free = ~np.any(K != 0.0, axis=(2, 3))  # [E, m]
         cut = ~free
+        e_cut = np.nonzero(cut)[0]  # the evaluation of each step in the cut
         # the blocks D dt / g and c I are scaled so that the 1-norm follows A_i dt (a low Pade degree, no
         # squaring); the exponential's (1, 2) block is linear in the (1, 2) block of Z, the (1, 3) block in
         # the product of the (1, 2) and (2, 3) blocks, so Phi0 D = g X12 and Phi1 D = g X13 / c
-        F = Ai * dt
-        Dd = D * dt
-        g = np.maximum(np.abs(Dd).sum(axis=-2).max(axis=-1) / np.maximum(np.abs(F).sum(axis=-2).max(
+        dt_c = dt[e_cut, None, None]
+        F_c = (A[e_cut] - D[cut] @ Cr[e_cut]) * dt_c
+        Dd = D[cut] * dt_c
+        g = np.maximum(np.abs(Dd).sum(axis=-2).max(axis=-1) / np.maximum(np.abs(F_c).sum(axis=-2).max(
             axis=-1), 1e-300), 1.0)[..., None, None]
-        Gs = Dd / g
         c = 2.0 ** -5 if self.order == 1 else 0.0
         P = np.empty((E, m, n, n))
         Phi0D, Phi1D = np.empty((E, m, n, r)), np.empty((E, m, n, r))
+        if len(F_c):
+            P[cut], X1, X2 = self._exponentials(F_c, Dd / g, c)
+            Phi0D[cut], Phi1D[cut] = X1 * g, X2 * g
         e_free = np.flatnonzero(free.any(axis=1))
-        first = free[e_free].argmax(axis=1)
-        # cut steps, and one exponential per evaluation for the steps out of cut (K_i = 0)
-        for sel, F_k, G_k in ((cut, F[cut], Gs[cut]), (None, F[e_free, first], Gs[e_free, first])):
-            if not len(F_k):
-                continue
-            X = self._exponentials(F_k, G_k, c)
-            if sel is None:
-                counts = free[e_free].sum(axis=1)
-                P[free], Phi0D[free], Phi1D[free] = (np.repeat(x, counts, axis=0) for x in X)
-            else:
-                P[sel], Phi0D[sel], Phi1D[sel] = X
-        Phi0D *= g
-        Phi1D *= g
+        if len(e_free):  # one exponential per evaluation for its steps out of the cut
+            X = self._exponentials(A[e_free] * dt[e_free, None, None], np.zeros((len(e_free), n, r)), c)
+            counts = free[e_free].sum(axis=1)
+            P[free], Phi0D[free], Phi1D[free] = (np.repeat(x, counts, axis=0) for x in X)
         if self.order == 1:
             R0, R1 = Phi0D - Phi1D, Phi1D
         else:
