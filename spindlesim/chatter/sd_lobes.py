@@ -421,6 +421,7 @@ def semi_discretization_lobes(process, tool: ToolSource, speeds_rpm: np.ndarray,
     # the default depth range and the searches' guesses
     zoa = zero_order_lobes(process, ToolSeries(speeds, tuple(frfs)) if per_speed else ToolSeries.constant(frfs[0]),
                            speeds)
+    del frfs  # (tens of MB for a rotor's models at 200 speeds; the search allocates its own)
     if depths_m is not None:
         grid = _Depths(np.sort(np.asarray(depths_m, float)), float(np.max(depths_m)), 0)
     elif depth_max_m is not None:
