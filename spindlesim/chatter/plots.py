@@ -37,8 +37,9 @@ def lobe_diagram_figure(diagram: LobeDiagram, title: str | None = None, show_lob
     its depth with the recommended speed.  Simulated points: o stable, x chatter (in the legend).  A
     limit found at one speed between speeds without one is drawn as a point.
     """
-    fig = _figure(9.0, 7.0)
-    ax, ax_f = fig.subplots(2, 1, sharex=True, height_ratios=[3, 1.3])
+    fig = _figure(9.0, 7.0, layout=None)
+    ax, ax_f = fig.subplots(2, 1, sharex=True, height_ratios=[3, 1.3],
+                            gridspec_kw=_margins(fig, 1.0, 0.25, 0.75, 0.6, 0.2, 0.0, rows=2, cols=1))
     n = diagram.speed_rpm
     lim = 1e3 * diagram.limit_depth_m
     capped = np.asarray(diagram.capped, bool) & ~np.isfinite(lim)
@@ -120,8 +121,9 @@ def frf_figure(tool: ToolPoint, terms: Sequence[str] = ("xx", "yy"),
     above the highest peak of a direct term that reaches a tenth of the largest one (the modes that can
     chatter), not at the end of the FRF's grid."""
     frf = tool.frf()
-    fig = _figure(10.0, 6.0)
-    (a_re, a_mag), (a_im, a_ph) = fig.subplots(2, 2, sharex=True)
+    fig = _figure(10.0, 6.0, layout=None)
+    (a_re, a_mag), (a_im, a_ph) = fig.subplots(2, 2, sharex=True,
+                                               gridspec_kw=_margins(fig, 0.9, 0.2, 0.5, 0.6, 0.25, 0.95, 2, 2))
     end = modes_of_interest_hz(frf)
     shown = frf.frequency_hz <= end  # drawn up to the axis' end only, so the magnitude axis fits what is seen
     f = frf.frequency_hz[shown]
@@ -262,8 +264,20 @@ def simulation_figure(sim: SimulationResult, title: str | None = None, periods_s
     return fig
 
 
-def _figure(width_in: float, height_in: float) -> Figure:
-    """A constrained-layout figure; matplotlib is imported here, not when the module is."""
+def _figure(width_in: float, height_in: float, layout: str | None = "constrained") -> Figure:
+    """A constrained-layout figure (``layout=None``: none, the panels placed by :func:`_margins`); matplotlib is
+    imported here, not when the module is."""
     from matplotlib.figure import Figure
 
-    return Figure(figsize=(width_in, height_in), layout="constrained")
+    return Figure(figsize=(width_in, height_in), layout=layout)
+
+
+def _margins(fig: Figure, left_in: float, right_in: float, top_in: float, bottom_in: float, hgap_in: float,
+             wgap_in: float, rows: int, cols: int) -> dict:
+    """The subplots' grid with margins and gaps in inches, for the figures drawn after every run (the
+    constrained layout engine measures every tick label twice per save: half of these figures' time)."""
+    w, h = fig.get_size_inches()
+    panel_h = (h - top_in - bottom_in - (rows - 1) * hgap_in) / rows
+    panel_w = (w - left_in - right_in - (cols - 1) * wgap_in) / cols
+    return dict(left=left_in / w, right=1 - right_in / w, top=1 - top_in / h, bottom=bottom_in / h,
+                hspace=hgap_in / panel_h, wspace=wgap_in / panel_w)

@@ -69,16 +69,16 @@ def _write(outdir, run_info, spec, result, at_deck, shown, info) -> list[Path]:
     from ..output.chatter_writer import write_chatter
     from ..output.drawing import draw
 
-    paths = [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, shown, info)]
+    # the figures first: a figure process draws them while this one writes the file
     dg = result.diagram
-    paths.append(draw(outdir / "chatter_lobes.png", lobes_figure, dg, result.simulations, at_deck,
-                      info.get("deck_speed_rpm"), result.recommendation, result.speed_limit_rpm))
-    paths.append(draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy")))
+    figures = [draw(outdir / "chatter_lobes.png", lobes_figure, dg, result.simulations, at_deck,
+                    info.get("deck_speed_rpm"), result.recommendation, result.speed_limit_rpm),
+               draw(outdir / "chatter_frf.png", frf_figure, shown, terms=("xx", "yy", "xy"))]
     if dg.stability_map is not None:
-        paths.append(draw(outdir / "chatter_stability_map.png", stability_map_figure, dg))
+        figures.append(draw(outdir / "chatter_stability_map.png", stability_map_figure, dg))
     for k, sim in enumerate(result.simulations):
-        paths.append(draw(outdir / f"chatter_simulation_{k + 1}.png", simulation_figure, sim))
-    return paths
+        figures.append(draw(outdir / f"chatter_simulation_{k + 1}.png", simulation_figure, sim))
+    return [write_chatter(outdir / "chatter.h5", run_info, spec, result, at_deck, shown, info)] + figures
 
 
 def lobes_figure(diagram, simulations, at_deck=None, deck_speed_rpm=None, recommendation=None, speed_limit_rpm=None):
