@@ -15,6 +15,11 @@ import numpy as np
 
 __all__ = ["expm_batch", "van_loan_blocks"]
 
+#: bytes of one n x n stack that :func:`van_loan_blocks` works on at a time: the approximant's sums of powers
+#: are passes over the whole stack, and a stack that stays in the processor's cache makes them about twice as fast
+#: (54 x 54 steps: 354 -> 173 us a step; 16 x 16: 18 -> 13 us)
+CHUNK_BYTES = 512 * 1024
+
 _B = (64764752532480000.0, 32382376266240000.0, 7771770303897600.0, 1187353796428800.0,
       129060195264000.0, 10559470521600.0, 670442572800.0, 33522128640.0, 1323241920.0,
       40840800.0, 960960.0, 16380.0, 182.0, 1.0)
@@ -92,6 +97,19 @@ def van_loan_blocks(F: np.ndarray, G: np.ndarray, norm: np.ndarray):
             break
     else:
         return None
+    n = F.shape[-1]
+    size = max(1, CHUNK_BYTES // (8 * n * n))
+    if F.ndim != 3 or len(F) <= size:
+        return _van_loan(F, G, b)
+    out = (np.empty(F.shape), np.empty(G.shape), np.empty(G.shape))
+    for a in range(0, len(F), size):  # the same degree for every chunk: the same numbers as in one piece
+        for o, x in zip(out, _van_loan(F[a:a + size], G[a:a + size], b)):
+            o[a:a + size] = x
+    return out
+
+
+def _van_loan(F: np.ndarray, G: np.ndarray, b: tuple[float, ...]):
+    """:func:`van_loan_blocks` with the Pade coefficients ``b`` chosen."""
     n, r = F.shape[-1], G.shape[-1]
     F2 = F @ F
     powers = [None, F2]  # I, F^2, F^4, ...

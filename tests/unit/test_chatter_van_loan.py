@@ -30,3 +30,22 @@ def test_blocks_equal_the_exponential_of_the_block_matrix(scale):
         assert np.allclose(P[e], X[:n, :n], rtol=1e-12, atol=1e-14)
         assert np.allclose(Phi1G[e], X[:n, n:n + r], rtol=1e-12, atol=1e-14 * scale)
         assert np.allclose(Phi2G[e], X[:n, n + r:] / c, rtol=1e-11, atol=1e-13 * scale)
+
+
+def test_a_stack_in_chunks_gives_the_same_numbers(monkeypatch):
+    """A long stack is worked on in pieces of CHUNK_BYTES (the sums of powers stay in the processor's cache):
+    the degree is chosen once for the whole stack, so every block is the one a single piece gives, bit for bit,
+    whatever the chunk (here 7 steps of 6 x 6 a chunk against all 50 at once)."""
+    from spindlesim.chatter import _expm
+
+    rng = np.random.default_rng(11)
+    k, n, r = 50, 6, 2
+    F = 0.3 * rng.standard_normal((k, n, n)) / n
+    G = 0.3 * rng.standard_normal((k, n, r)) / n
+    norm = float(np.abs(F).sum(axis=-2).max())
+    monkeypatch.setattr(_expm, "CHUNK_BYTES", 1 << 30)
+    whole = van_loan_blocks(F, G, norm)
+    monkeypatch.setattr(_expm, "CHUNK_BYTES", 7 * 8 * n * n)
+    pieces = van_loan_blocks(F, G, norm)
+    for a, b in zip(whole, pieces):
+        assert a.shape == b.shape and np.array_equal(a, b)
