@@ -73,7 +73,8 @@ def port_receptance(sysm: SystemMatrices, idx, omega: np.ndarray) -> np.ndarray:
         near = np.abs(d) < gap
         if near.any():
             d = np.where(near, np.where(d == 0, 1j, d / np.where(d == 0, 1.0, np.abs(d))) * gap, d)
-        return ((1.0 / d) @ residues).reshape(len(w), m, m)
+        np.divide(1.0, d, out=d)  # in place (d is this function's own array)
+        return (d @ residues).reshape(len(w), m, m)
     log.info("port receptance: ill-conditioned eigenvectors; solved at every frequency")
     D = _dynamic(sysm.K, sysm.M, sysm.C, w)
     E = np.zeros((sysm.size, len(idx)))
