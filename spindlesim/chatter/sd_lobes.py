@@ -267,14 +267,14 @@ def _interpolated(a, b, c, fa, fb, fc) -> np.ndarray:
 
 def _itp(prob, s_idx, lo, hi, f_lo, f_hi, rtol: float, M_lo=None, mu_hi=None, n0: int = 1):
     """Root of f = rho - 1 in each bracket (f_lo < 0 <= f_hi) by the ITP method (Oliveira and
-    Takahashi, ACM TOMS 47 (2020) 5): an interpolation (:func:`_interpolated`), truncated (by ITP_KAPPA1) and
-    projected so that no bracket needs more than n0 steps beyond bisection's.  rho is the largest of several multipliers' moduli, so it
-    has kinks, and a nearly undamped mode can hold it a hair below 1 up to where the chatter mode
-    overtakes it, which would stall an interpolation on rho itself: the interpolation follows the
-    multiplier that is unstable at the upper end (at the lower end the one nearest it, ``M_lo`` [E, k] the
-    largest multipliers there, ``mu_hi`` [E] the largest at the upper end; NaN: unknown, rho is used),
-    while rho alone decides which end a trial depth replaces.  Returns the roots and d|mu| / d a of the
-    followed multiplier over the last brackets."""
+    Takahashi, ACM TOMS 47 (2020) 5): an interpolation (:func:`_interpolated`), truncated (by ITP_KAPPA1)
+    and projected so that no bracket needs more than n0 steps beyond bisection's.  rho is the largest of
+    several multipliers' moduli, so it has kinks, and a nearly undamped mode can hold it a hair below 1 up
+    to where the chatter mode overtakes it, which would stall an interpolation on rho itself: the
+    interpolation follows the multiplier that is unstable at the upper end (at the lower end the one nearest
+    it, ``M_lo`` [E, k] the largest multipliers there, ``mu_hi`` [E] the largest at the upper end; NaN:
+    unknown, rho is used), while rho alone decides which end a trial depth replaces.  Returns the roots and
+    d|mu| / d a of the followed multiplier over the last brackets."""
     a, b, fa, fb = (np.array(v, float) for v in (lo, hi, f_lo, f_hi))
     E, k = len(a), N_MULTIPLIERS
     M_lo = np.full((E, k), np.nan, complex) if M_lo is None else np.array(M_lo, complex)
