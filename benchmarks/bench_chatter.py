@@ -2,7 +2,8 @@
 
 Prints, in turn:
 1. timing: zero-order lobes for one FRF (200 speeds; target < 50 ms), the 200-speed diagram with
-   a tool-point model per speed (target < 5 s on one core), semi-discretization maps;
+   a tool-point model per speed (target < 5 s on one core), the step exponentials in cache-sized stacks
+   against one stack, semi-discretization maps;
 2. turning: oriented-FRF limits against the closed form 2 k zeta (1 + zeta) / (Ks cos beta);
 3. milling, Insperger-Stepan single-DOF example (f_n 922 Hz, zeta 0.011, m 0.03993 kg, Kt 6e8,
    Kn 2e8 N/m^2): zero-order against semi-discretization for 4 and 2 teeth in a slot, and the
@@ -79,6 +80,7 @@ def timing(repeat: int) -> None:
     print(f"   zero-order with a model per speed (48 states, 24 modes): {dt:6.2f} s for 200 speeds "
           f"(+ {t_build:.2f} s building the stand-in models)")
     milling_spindle(repeat)
+    step_exponentials(repeat)
     low = MillingProcess(2, 20e-3, 1e-3, "down", 6e8, 1 / 3)
     for name, proc, tl, S, D in (("SD map, single DOF, 5 % immersion", low, SDOF, 100, 40),
                                  ("SD map, 4 modes x/y, half immersion", half, tool, 100, 40)):
@@ -88,6 +90,28 @@ def timing(repeat: int) -> None:
         dt = time.perf_counter() - t0
         m = d.steps_per_period
         print(f"   {name:40s} {S} x {D} grid + refinement: {dt:6.2f} s (steps/period {m.min()}-{m.max()})")
+
+
+def step_exponentials(repeat: int) -> None:
+    """The semi-discretization's step exponentials (Van Loan's blocks) worked out in cache-sized stacks, as the
+    lobes do, against the whole stack at once (the same numbers): a 16-state model (the milling deck's dominant
+    modes), 30 and 54 states (a short tool's), thousands of steps as one evaluation batch holds."""
+    from spindlesim.chatter import _expm
+
+    rng = np.random.default_rng(0)
+    print("   step exponentials, us a step (cache-sized stacks / one stack):")
+    for n, k in ((16, 8000), (30, 4000), (54, 1500)):
+        F = 0.03 * rng.standard_normal((k, n, n))
+        G = 0.01 * rng.standard_normal((k, n, 2))
+        norm = float(np.abs(F).sum(axis=-2).max())
+        chunked, _ = best_of(lambda: _expm.van_loan_blocks(F, G, norm), repeat)
+        saved = _expm.CHUNK_BYTES
+        _expm.CHUNK_BYTES = 1 << 40
+        try:
+            whole, _ = best_of(lambda: _expm.van_loan_blocks(F, G, norm), repeat)
+        finally:
+            _expm.CHUNK_BYTES = saved
+        print(f"      {n:3d} states: {1e6 * chunked / k:6.1f} / {1e6 * whole / k:6.1f}  ({whole / chunked:.2f}x)")
 
 
 def milling_spindle(repeat: int) -> None:
