@@ -39,7 +39,7 @@ import logging
 import numpy as np
 import scipy.linalg as sla
 
-from ..chatter.state_space import POLE_GAP
+from ..chatter.state_space import _off_poles
 from ..fe.assembly import ShaftMatrices
 from ..model.rotor import Joint
 from .modal import first_order
@@ -68,12 +68,8 @@ def port_receptance(sysm: SystemMatrices, idx, omega: np.ndarray) -> np.ndarray:
         CV = C @ V  # [m, 2n]
         m = len(idx)
         residues = (CV.T[:, :, None] * left[:, None, :]).reshape(len(lam), m * m)
-        d = 1j * w[:, None] - lam[None, :]
-        gap = POLE_GAP * np.abs(lam)[None, :]
-        near = np.abs(d) < gap
-        if near.any():
-            d = np.where(near, np.where(d == 0, 1j, d / np.where(d == 0, 1.0, np.abs(d))) * gap, d)
-        np.divide(1.0, d, out=d)  # in place (d is this function's own array)
+        d = _off_poles(1j * w[:, None] - lam[None, :], lam)  # a new array
+        np.divide(1.0, d, out=d)  # in place
         return (d @ residues).reshape(len(w), m, m)
     log.info("port receptance: ill-conditioned eigenvectors; solved at every frequency")
     D = _dynamic(sysm.K, sysm.M, sysm.C, w)
