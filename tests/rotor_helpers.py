@@ -74,3 +74,15 @@ def printed_summary(output: str, file_name: str) -> list[str]:
             break
         out.append(ln[2:])
     return out
+
+
+def speed_tabled(rotor):
+    """``rotor`` with each linear bearing's one row of coefficients given at two speeds (the same numbers): the same
+    rotor, whose static state the operating points solve at every speed (a rotor on speed-independent bearings is
+    solved once, ``analysis.points``)."""
+    import dataclasses
+
+    rows = lambda a: np.repeat(np.asarray(a), 2, axis=0)  # noqa: E731
+    bearings = tuple(dataclasses.replace(b, speeds_rad_s=np.array([0.0, 1e4]), K_N_m=rows(b.K_N_m),
+                                         C_Ns_m=rows(b.C_Ns_m)) for b in rotor.bearings)
+    return dataclasses.replace(rotor, bearings=bearings)

@@ -25,7 +25,7 @@ from ..model.rotor import Rotor
 from .modal import modal_from_matrices
 from .points import OperatingPoints
 from .prefetch import ModalPrefetch
-from .reduced import checked_basis, first_basis
+from .reduced import checked_basis, first_basis, usable_cores
 from .resonance import Crossings, find_crossings
 from .results import CampbellResult
 
@@ -175,15 +175,6 @@ def critical_speed_crossings(c: Crossings) -> np.ndarray:
     backward lateral mode (an unbalance drives forward whirl; a backward mode only through support
     anisotropy, and is listed with the other crossings)."""
     return (c.order == 1.0) & c.critical & np.array([w != "backward" for w in c.whirl], bool)
-
-
-def usable_cores() -> int:
-    """The cores this process may run on (its CPU affinity where the platform says, e.g. under taskset)."""
-    import os
-
-    if hasattr(os, "sched_getaffinity"):
-        return max(len(os.sched_getaffinity(0)), 1)
-    return os.cpu_count() or 1
 
 
 def _modal_at_speeds(points, speeds: np.ndarray, n_modes: int, states, exact: bool = False,

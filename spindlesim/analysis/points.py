@@ -23,6 +23,7 @@ states.  The counters ``assemblies`` and ``solves`` tell how much was computed (
 from __future__ import annotations
 
 import dataclasses
+import functools
 import logging
 from dataclasses import dataclass
 from typing import Callable
@@ -87,6 +88,10 @@ class OperatingPoints:
         rpm = float(self.rotor.speed_rpm if speed_rpm is None else speed_rpm)
         st = self._states.get(rpm)
         if st is None:
+            if self._states and self._speed_free:  # the state solved at another speed, at this one
+                st = dataclasses.replace(next(iter(self._states.values())), speed_rad_s=rpm * RPM)
+                self._states[rpm] = st
+                return st
             if self.thermal is not None:
                 st = self.thermal_state(rpm).operating
             else:
@@ -94,6 +99,16 @@ class OperatingPoints:
             self.solves += 1
             self._states[rpm] = st
         return st
+
+    @functools.cached_property
+    def _speed_free(self) -> bool:
+        """Whether the static state is the same at every speed: no thermal model, every bearing speed-independent
+        (the contract's ``speed_independent``: a linear bearing without a speed table) and no speed in the
+        shaft's stiffness (no rotating internal damping, whose circulatory term grows with speed).  The loads do
+        not depend on speed (``fe.assembly.load_vector``).  Such a rotor's Campbell diagram, FRF and lobes at many
+        speeds solve its statics once."""
+        return (self.thermal is None and self.shaft.eta_v == 0.0
+                and all(b.speed_independent for b in self.rotor.bearings))
 
     def thermal_state(self, speed_rpm: float):
         """The spindle's thermal equilibrium at ``speed_rpm`` (``spindle_thermal.ThermalState``), started from

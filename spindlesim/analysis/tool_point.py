@@ -31,7 +31,7 @@ from ..model.rotor import Rotor
 from .modal import first_order
 from .operating import EquilibriumError, OperatingState, SystemMatrices, system_matrices
 from .points import OperatingPoints
-from .reduced import checked_basis
+from .reduced import checked_basis, on_cores
 
 log = logging.getLogger(__name__)
 
@@ -82,7 +82,9 @@ class ToolPointModesMatch:
 
     def reference(self, rotor: Rotor, states) -> list:
         eye = np.eye(rotor.dofs.size)[:, self.tip]
-        return [state_space(system_matrices(rotor, state=st), eye).significant_modes(rel=DOMINANT) for st in states]
+        # each a full eigenproblem with eigenvectors, which releases the interpreter lock: side by side
+        return on_cores(lambda st: state_space(system_matrices(rotor, state=st), eye).significant_modes(rel=DOMINANT),
+                        states)
 
     def accepts(self, basis, states, reference) -> tuple[bool, str]:
         P = basis.T[self.tip].T

@@ -31,6 +31,11 @@ iterative : bool
     Whether its state at an operating point is found by iteration (a contact equilibrium, a film's
     thermal equilibrium): a sweep over many speeds then shares its static states among the cores
     (``analysis.points``).  False for a bearing whose reaction is linear; the default is True.
+speed_independent : bool
+    Whether its reaction, and so its operating point and coefficients, are the same at every speed (a
+    linear bearing without a speed table): a rotor whose bearings all are, and whose shaft has no
+    speed-dependent stiffness, has one static state at every speed (``analysis.points`` solves it once).
+    The default is False.
 
 Methods
 -------
@@ -127,6 +132,7 @@ class Bearing(Protocol):
     dof_names: tuple[str, ...]
     internal_mass: np.ndarray
     iterative: bool
+    speed_independent: bool
 
     def force_and_tangent(self, q: np.ndarray, v: np.ndarray, t: float, speed: float,
                           angle: float | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]: ...
@@ -197,6 +203,7 @@ class BearingBase:
 
     internal_mass: np.ndarray = np.zeros(0)
     iterative: bool = True
+    speed_independent: bool = False
 
     def static_displacement(self, speed: float, static_load: np.ndarray | None = None,
                             start: np.ndarray | None = None) -> np.ndarray:
@@ -295,6 +302,10 @@ class AxiallyShifted(BearingBase):
     @property
     def iterative(self) -> bool:
         return self.inner.iterative
+
+    @property
+    def speed_independent(self) -> bool:
+        return self.inner.speed_independent
 
     def force_and_tangent(self, q, v, t, speed, angle=None):
         return self.inner.force_and_tangent(np.asarray(q, float) + self._shift, v, t, speed, angle)

@@ -11,6 +11,7 @@ import spindlesim.analysis.campbell as campbell
 import spindlesim.analysis.reduced as reduced
 from spindlesim.deck import default_deck
 from spindlesim.model.build import build_rotor
+from tests.rotor_helpers import speed_tabled
 
 FIELDS = ("speed_rpm", "frequency_hz", "damping_ratio", "log_dec", "whirl", "critical_speeds_rpm")
 
@@ -73,7 +74,7 @@ def test_no_prefetch_thread_outlives_a_failing_diagram(monkeypatch):
     import spindlesim.analysis.points as points
 
     monkeypatch.setattr(campbell._Guess, "MIN_STATE_S", 0.0)
-    rotor = build_rotor(default_deck("spindle_linear").deck)
+    rotor = speed_tabled(build_rotor(default_deck("spindle_linear").deck))  # a state solved at every speed
     monkeypatch.setattr(campbell, "usable_cores", lambda: 2)
     real = points.operating_state
 

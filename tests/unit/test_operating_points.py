@@ -16,6 +16,7 @@ from spindlesim.analysis.points import OperatingPoints
 from spindlesim.deck import parse_deck, default_deck, load_deck
 from spindlesim.model.build import build_rotor
 from spindlesim.runs import run_analysis
+from tests.rotor_helpers import speed_tabled
 
 DECKS = Path(__file__).parents[2] / "decks"
 
@@ -83,12 +84,36 @@ def test_the_analyses_of_one_run_share_the_assembly_and_the_deck_speed_state(cou
 
 
 def test_a_state_is_kept_and_a_sweep_starts_each_speed_from_its_neighbour():
-    pts = OperatingPoints(build_rotor(default_deck("spindle_linear").deck))
+    pts = OperatingPoints(speed_tabled(build_rotor(default_deck("spindle_linear").deck)))
     a = pts.state(3000.0)
     assert pts.state(3000.0) is a and pts.solves == 1
     sweep = pts.along(np.array([0.0, 1500.0, 3000.0]))
     assert pts.solves == 3 and sweep.states[2] is a  # 3000 rpm was known
     assert not sweep.stopped and sweep.first == 0
+
+
+def test_a_rotor_on_speed_independent_bearings_is_solved_once(counted):
+    """The seed spindle on its linear bearings (one row of coefficients each, no internal damping): its static state
+    is the same at every speed, so a 50-speed sweep solves it once, and each speed's state equals the one solved at
+    that speed to the bit (the same equations; speed enters only as the state's speed).  With a speed table (the
+    same numbers at two speeds) the rotor is solved at every speed."""
+    rotor = build_rotor(load_deck(DECKS / "seed003_spindle_linear.yaml").deck)
+    assert all(b.speed_independent for b in rotor.bearings)
+    speeds = np.linspace(0.0, 12000.0, 50)
+    sweep = OperatingPoints(rotor).along(speeds)
+    assert counted["speeds"] == [0.0] and len(sweep) == 50
+    for k in (1, 37):
+        own = OperatingPoints(rotor).state(speeds[k])
+        got = sweep.states[k]
+        assert got.speed_rad_s == own.speed_rad_s == speeds[k] * np.pi / 30
+        assert np.array_equal(got.q, own.q)
+        for (ka, ca), (kb, cb) in zip(got.coefficients, own.coefficients):
+            assert np.array_equal(ka, kb) and np.array_equal(ca, cb)
+    counted["speeds"].clear()
+    tabled = speed_tabled(rotor)
+    assert not any(b.speed_independent for b in tabled.bearings)
+    OperatingPoints(tabled).along(speeds[:5])
+    assert counted["speeds"] == list(speeds[:5])
 
 
 def test_the_rotor_statics_is_the_damped_newton_of_the_statics_and_names_what_failed(monkeypatch):

@@ -24,6 +24,11 @@ class LinearBearing(BearingBase):
     dof_names: tuple[str, ...] = RADIAL
     iterative = False  # the contract: a linear reaction, nothing to solve at an operating point
 
+    @property
+    def speed_independent(self) -> bool:
+        """The contract's: one row of coefficients holds at every speed."""
+        return len(self.speeds_rad_s) == 1
+
     def coefficients(self, speed: float) -> tuple[np.ndarray, np.ndarray]:
         if len(self.speeds_rad_s) == 1:
             return self.K_N_m[0], self.C_Ns_m[0]
