@@ -48,48 +48,12 @@ import numpy as np
 from scipy.sparse.linalg import ArpackNoConvergence, eigs
 
 from ._expm import expm_batch, van_loan_blocks
+from .period_map import StepMaps, monodromy_matrix, period_history
 from .state_space import ToolPointModel
 
 __all__ = ["SdProblem", "CriticalMultiplier", "spectral_radius"]
 
 log = logging.getLogger(__name__)
-
-
-def _monodromy(P, R0, R1, Cr, Yx=None, Yh=None):
-    """Phi [E, N, N] from the step maps P [E, m, n, n], R0/R1 [E, m, n, r] and Cr [E, r, n].
-
-    The rows of x_i as linear functions of z_0 are carried through the m steps (batched over
-    E); history slot s of z holds y_{-s-1}.  With a feed-through the output recorded at step i is
-    y_i = Yx[:, i] x_i + Yh[:, i] y_{i-m} (Yx [E, m, r, n], Yh [E, m, r, r]) instead of Cr x_i."""
-    E, m, n, _ = P.shape
-    r = Cr.shape[1]
-    N = n + r * m
-    X = np.zeros((E, n, N))
-    X[:, :, :n] = np.eye(n)
-    Ys = np.zeros((E, m, r, N))
-    c = N  # history columns below c (slots not reached yet) are zero in X: multiply the rest only
-    for i in range(m):
-        Yi = Cr if Yx is None else Yx[:, i]
-        Ys[:, i, :, :n] = Yi @ X[:, :, :n]
-        Ys[:, i, :, c:] = Yi @ X[:, :, c:]
-        if Yx is not None:
-            h = n + r * (m - i - 1)  # y_{i-m}
-            Ys[:, i, :, h:h + r] += Yh[:, i]
-        X[:, :, :n] = P[:, i] @ X[:, :, :n]
-        X[:, :, c:] = P[:, i] @ X[:, :, c:]
-        s0 = m - i - 1  # y_{i-m}
-        X[:, :, n + r * s0:n + r * (s0 + 1)] += R0[:, i]
-        c = min(c, n + r * s0)
-        if i < m - 1:  # y_{i-m+1} still in the history
-            s1 = m - i - 2
-            X[:, :, n + r * s1:n + r * (s1 + 1)] += R1[:, i]
-            c = min(c, n + r * s1)
-        else:  # y_{i-m+1} = y_0 = Cr x_0
-            X += R1[:, i] @ Ys[:, 0]
-    out = np.empty((E, N, N))
-    out[:, :n] = X
-    out[:, n:] = Ys[:, ::-1].reshape(E, m * r, N)  # new slot s holds y_{m-1-s}
-    return out
 
 
 _POOLS: dict[int, ThreadPoolExecutor] = {}
@@ -324,8 +288,13 @@ class SdProblem:
             K = self._K[key] = self.process.directional_steps(self.steps, key)
         return K
 
-    def monodromy(self, s_idx: np.ndarray, depth: np.ndarray) -> np.ndarray:
-        """Monodromy matrices [E, N, N] at speeds ``speeds[s_idx]`` and depths ``depth`` [m]."""
+    def monodromy(self, s_idx: np.ndarray, depth: np.ndarray, full: bool = True) -> np.ndarray:
+        """Monodromy matrices [E, N, N] at speeds ``speeds[s_idx]`` and depths ``depth`` [m]; with ``full=False``
+        the history only of the slots the cut reads (:mod:`.period_map`: the same nonzero multipliers)."""
+        return monodromy_matrix(self.step_maps(s_idx, depth), full)
+
+    def step_maps(self, s_idx: np.ndarray, depth: np.ndarray) -> StepMaps:
+        """The maps of each step of the period (module note) at speeds ``speeds[s_idx]`` and depths ``depth``."""
         s_idx = np.atleast_1d(np.asarray(s_idx, np.int64))
         depth = np.broadcast_to(np.asarray(depth, float), s_idx.shape)
         m, n, r = self.steps, self.A.shape[1], self.U.shape[1]
@@ -375,7 +344,7 @@ class SdProblem:
             R0, R1 = Phi0D - Phi1D, Phi1D
         else:
             R0 = R1 = 0.5 * Phi0D
-        return _monodromy(P, R0, R1, Cr, Yx, Yh)
+        return StepMaps(P, R0, R1, Cr, Yx, Yh, cut.any(axis=0))
 
     @staticmethod
     def _exponentials(F, G, c):
@@ -405,7 +374,8 @@ class SdProblem:
         starts = range(0, len(s_idx), chunk)
 
         def part(a):
-            return _largest_multipliers(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk]), self.A.shape[1])
+            return _largest_multipliers(self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk], full=False),
+                                        self.A.shape[1])
 
         return np.concatenate(parallel_map(part, starts))
 
@@ -427,20 +397,23 @@ class SdProblem:
         chunk = self._chunk()
         out = []
         for a in range(0, len(s_idx), chunk):
-            Phi = self.monodromy(s_idx[a:a + chunk], depth[a:a + chunk])
-            out += [self._critical(int(s), P) for s, P in zip(s_idx[a:a + chunk], Phi)]
+            maps = self.step_maps(s_idx[a:a + chunk], depth[a:a + chunk])
+            Phi = monodromy_matrix(maps, full=False)  # the history the cut reads; the rest from the eigenvector
+            for e, (s, P) in enumerate(zip(s_idx[a:a + chunk], Phi)):
+                mu, v = _dominant_eigenpair(P, self.A.shape[1])
+                if mu.imag < 0:  # the conjugate pair member with arg in [0, pi]
+                    mu, v = mu.conjugate(), v.conj()
+                out.append(self._critical(int(s), mu, period_history(maps, e, mu, v)))
         return out
 
-    def _critical(self, s: int, Phi: np.ndarray) -> CriticalMultiplier:
-        mu, v = _dominant_eigenpair(Phi, self.A.shape[1])
-        if mu.imag < 0:  # the conjugate pair member with arg in [0, pi]
-            mu, v = mu.conjugate(), v.conj()
+    def _critical(self, s: int, mu: complex, hist: np.ndarray) -> CriticalMultiplier:
+        """Kind and dominant chatter frequency of the critical multiplier ``mu`` from its eigenvector's outputs over
+        the period before, ``hist`` [m, r] = y_{-m} ... y_{-1}."""
         rho = abs(mu)
         tol = 1e-9 * max(rho, 1e-300)
         kind = "fold" if (abs(mu.imag) <= tol and mu.real > 0) else ("flip" if abs(mu.imag) <= tol else "hopf")
-        m, n, r, tau = self.steps, self.A.shape[1], self.U.shape[1], self.tau[s]
-        hist = v[n:].reshape(m, r)[::-1]  # y_{-m} ... y_{-1}: samples at t_j = (j - m) dt
-        t = (np.arange(m) - m) * (tau / m)
+        m, tau = self.steps, self.tau[s]
+        t = (np.arange(m) - m) * (tau / m)  # the samples' instants
         p = hist * np.exp(-np.log(mu) * t / tau)[:, None]
         c = np.fft.fft(p, axis=0)  # harmonic q at (arg mu + 2 pi q) / tau
         q = np.fft.fftfreq(m, 1.0 / m)
