@@ -45,6 +45,7 @@ from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg as sla
 from scipy.sparse.linalg import ArpackNoConvergence, eigs
 
 from ._expm import expm_batch, van_loan_blocks
@@ -198,6 +199,20 @@ class CriticalMultiplier:
     lobe: int  # whole chatter waves per tooth period
 
 
+def _balanced(A: np.ndarray, B: np.ndarray, C: np.ndarray):
+    """The models [E] in balanced states x = S x~, S diagonal of powers of two (LAPACK's gebal, so exact): the
+    same outputs, multipliers and monodromy spectra, but a step's 1-norm that follows its dynamics.  A tap test's
+    modes in (q, q') coordinates have |A| ~ w^2 against w for the balanced form: at 5 % immersion an 8-mode model's
+    steps had 1-norms in the thousands, and each exponential took ten squarings instead of a low Pade degree."""
+    A, B, C = A.copy(), B.copy(), C.copy()
+    for e in range(len(A)):
+        _, (s, _perm) = sla.matrix_balance(A[e], permute=False, separate=True)
+        A[e] *= s[None, :] / s[:, None]
+        B[e] /= s[:, None]
+        C[e] *= s[None, :]
+    return A, B, C
+
+
 class SdProblem:
     """Semi-discretized stability problem of one process over a set of speeds.
 
@@ -224,9 +239,8 @@ class SdProblem:
         for mdl, d in zip(models, feed):
             rows |= np.any(mdl.C != 0.0, axis=1) | np.any(d != 0.0, axis=1)
         self.U = np.eye(2)[:, rows]  # [2, r] outputs kept in the history
-        self.A = np.stack([mdl.A for mdl in models])
-        self.B = np.stack([mdl.B for mdl in models])
-        self.Cr = np.stack([mdl.C[rows] for mdl in models])
+        self.A, self.B, self.Cr = _balanced(np.stack([mdl.A for mdl in models]), np.stack([mdl.B for mdl in models]),
+                                            np.stack([mdl.C[rows] for mdl in models]))
         self.D = np.stack(feed) if any(np.any(d) for d in feed) else None
         self.shared = len(models) == 1
         self._K: dict[float, np.ndarray] = {}

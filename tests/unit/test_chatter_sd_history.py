@@ -89,3 +89,27 @@ def test_the_outputs_of_a_period_run_from_the_kept_eigenvector_are_the_full_eige
         assert np.max(np.abs(scale * got - want)) < 1e-8 * np.max(np.abs(want))
         a, b = prob._critical(int(s[e]), mu_f, want), prob._critical(int(s[e]), mu_k, got)
         assert a.kind == b.kind and a.chatter_frequency_hz == pytest.approx(b.chatter_frequency_hz, rel=1e-9)
+
+
+def test_the_models_are_balanced_so_that_a_step_needs_no_squaring(monkeypatch):
+    """A tap test's modes in (q, q') coordinates have a state matrix of 1-norm w^2 (here 6.7e8 /s for the 4.1 kHz
+    mode) against w for the balanced form: the steps' exponentials then needed the degree-13 approximant with ten
+    squarings (``_expm.expm_batch``).  Balanced by a diagonal similarity of powers of two (exact), every step takes a
+    low-degree Pade approximant, and the multipliers are those of any other state basis (a diagonal similarity of
+    arbitrary scales gives the same to 1e-9)."""
+    import spindlesim.chatter.semi_discretization as sd
+
+    modes = [Mode("xy"[k % 2], f, 0.02, 5e7) for k, f in enumerate([700, 900, 1300, 1600, 2100, 2600, 3400, 4100])]
+    tool = ToolPointModel.from_modes(modes)
+    calls = []
+    real = sd.expm_batch
+    monkeypatch.setattr(sd, "expm_batch", lambda Z: calls.append(len(Z)) or real(Z))
+    proc = MillingProcess(4, 16e-3, 0.8e-3, "down", 7.67e8, 0.22)
+    s, depth = np.array([0, 1]), np.array([3e-3, 5e-3])
+    mu = SdProblem(proc, [tool], np.array([12000.0, 20000.0]), 150, 1).multipliers(s, depth)
+    assert not calls
+    scale = np.exp(np.random.default_rng(3).uniform(-4.0, 4.0, tool.A.shape[0]))  # x = S x~, S = diag(scale)
+    other = ToolPointModel(tool.A * scale[None, :] / scale[:, None], tool.B / scale[:, None], tool.C * scale[None, :])
+    mu_other = SdProblem(proc, [other], np.array([12000.0, 20000.0]), 150, 1).multipliers(s, depth)
+    for a, b in zip(mu[:, :4], mu_other):
+        assert np.max(np.min(np.abs(a[:, None] - b[None, :]), axis=1)) < 1e-9 * abs(a[0])
