@@ -33,6 +33,8 @@ semi-discretization and the simulation; the zero-order average does not depend o
 
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass, replace
 from typing import Literal
 
@@ -288,19 +290,8 @@ class MillingProcess(_Base):
 
     def directional_steps(self, steps: int, depth_m: float) -> np.ndarray:
         """K(t) averaged exactly over each step (integral of M over the engaged part of the arc)."""
-        N, st, ex = self.teeth, *self.entry_exit_rad
-        dphi = 2 * np.pi / (N * steps)
-        lag = self._slices(depth_m)
-        u = (np.arange(steps)[:, None, None] * dphi + 2 * np.pi * np.arange(N)[None, :, None] / N
-             - lag[None, None, :]) % (2 * np.pi)  # [steps, N, L]
-        total = np.zeros(u.shape + (2, 2))
-        for shift in (0.0, 2 * np.pi):
-            lo = np.maximum(u, st + shift)
-            hi = np.minimum(u + dphi, ex + shift)
-            cut = hi > lo
-            val = _antiderivative(np.where(cut, hi, 0.0), self.Kr) - _antiderivative(np.where(cut, lo, 0.0), self.Kr)
-            total += np.where(cut[..., None, None], val, 0.0)
-        K = self.Kt_N_m2 * depth_m * total.sum(axis=1).mean(axis=1) / dphi  # [steps, 2, 2]
+        engaged, dphi = _engaged_arc(self, int(steps), float(depth_m) if self.helix_rad else 0.0)
+        K = self.Kt_N_m2 * depth_m * engaged / dphi  # [steps, 2, 2]
         return self._to_tool(K)
 
     def cutting_tables(self, steps: int, depth_m: float) -> CuttingTables:
@@ -328,6 +319,28 @@ class MillingProcess(_Base):
                 f"ae = {self.radial_depth_m * 1e3:g} mm ({100 * self.immersion:.3g} %), "
                 f"Kt = {self.Kt_N_m2 / 1e6:g} N/mm2, Kr = {self.Kr:.3g}"
                 + (f", helix {np.rad2deg(self.helix_rad):g} deg" if self.helix_rad else ""))
+
+
+@functools.lru_cache(maxsize=256)
+def _engaged_arc(process: MillingProcess, steps: int, depth_m: float) -> tuple[np.ndarray, float]:
+    """(integral of M over the engaged part of each step's arc, summed over the teeth and averaged over the axial
+    slices [steps, 2, 2] (read-only), the step's angle).  Depends on the depth only through a helix's slices (0.0
+    without one): a depth search evaluates many depths at one step count, and this is the costly part of each."""
+    N, st, ex = process.teeth, *process.entry_exit_rad
+    dphi = 2 * np.pi / (N * steps)
+    lag = process._slices(depth_m)
+    u = (np.arange(steps)[:, None, None] * dphi + 2 * np.pi * np.arange(N)[None, :, None] / N
+         - lag[None, None, :]) % (2 * np.pi)  # [steps, N, L]
+    total = np.zeros(u.shape + (2, 2))
+    for shift in (0.0, 2 * np.pi):
+        lo = np.maximum(u, st + shift)
+        hi = np.minimum(u + dphi, ex + shift)
+        cut = hi > lo
+        val = _antiderivative(np.where(cut, hi, 0.0), process.Kr) - _antiderivative(np.where(cut, lo, 0.0), process.Kr)
+        total += np.where(cut[..., None, None], val, 0.0)
+    engaged = total.sum(axis=1).mean(axis=1)
+    engaged.setflags(write=False)
+    return engaged, dphi
 
 
 Process = TurningProcess | MillingProcess
