@@ -72,27 +72,29 @@ def monodromy_matrix(maps: StepMaps, full: bool = True) -> np.ndarray:
     used, col = _kept(maps, full)
     kept = np.flatnonzero(used)
     N = n + r * len(kept)
-    X = np.zeros((E, n, N))
+    out = np.zeros((E, N, N))
+    Ys = out[:, n:].reshape(E, len(kept), r, N)  # the outputs recorded, by the slot they fill (kept order)
+    # x_i's rows in two buffers, each step writing the other (no temporaries): columns [n, c) stay zero in both,
+    # as c never grows
+    X, X_next = np.zeros((E, n, N)), np.zeros((E, n, N))
     X[:, :, :n] = np.eye(n)
-    Ys = np.zeros((E, len(kept), r, N))  # the outputs recorded, by the slot they fill (kept order)
     y0 = None  # y_0 as a function of z_0, for the last step's y_{i-m+1}
     c = N  # history columns at or above c may be nonzero in X (slots reached so far): multiply those only
     for i in range(m):
         s_new = m - 1 - i  # the slot this step's output fills for the next period
         if used[s_new] or (i == 0 and cut[m - 1]):
             Yi = Cr if Yx is None else Yx[:, i]
-            Y = np.zeros((E, r, N))
-            Y[:, :, :n] = Yi @ X[:, :, :n]
-            Y[:, :, c:] = Yi @ X[:, :, c:]
+            Y = Ys[:, np.searchsorted(kept, s_new)] if used[s_new] else np.zeros((E, r, N))
+            np.matmul(Yi, X[:, :, :n], out=Y[:, :, :n])
+            np.matmul(Yi, X[:, :, c:], out=Y[:, :, c:])
             if Yx is not None and col[m - i - 1] >= 0:  # y_{i-m} (Yh is zero out of the cut)
                 h = col[m - i - 1]
                 Y[:, :, h:h + r] += Yh[:, i]
-            if used[s_new]:
-                Ys[:, np.searchsorted(kept, s_new)] = Y
             if i == 0:
                 y0 = Y
-        X[:, :, :n] = P[:, i] @ X[:, :, :n]
-        X[:, :, c:] = P[:, i] @ X[:, :, c:]
+        np.matmul(P[:, i], X[:, :, :n], out=X_next[:, :, :n])
+        np.matmul(P[:, i], X[:, :, c:], out=X_next[:, :, c:])
+        X, X_next = X_next, X
         if not cut[i]:
             continue  # R0 = R1 = 0 out of the cut
         h0 = col[m - i - 1]  # y_{i-m}
@@ -104,9 +106,7 @@ def monodromy_matrix(maps: StepMaps, full: bool = True) -> np.ndarray:
             c = min(c, h1)
         else:  # y_{i-m+1} = y_0
             X += R1[:, i] @ y0
-    out = np.empty((E, N, N))
     out[:, :n] = X
-    out[:, n:] = Ys.reshape(E, len(kept) * r, N)
     return out
 
 
