@@ -38,7 +38,6 @@ from __future__ import annotations
 import logging
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from .results import LobeCurve, LobeDiagram, StabilityMap, speed_runs
 from .sd_model import models_for_sd
@@ -230,6 +229,8 @@ def _brackets(prob, depths, rho, rho0, first, peak_check):
             left, right = ext[s, j], ext[s, j + 2]
             if r < peak_check or r < left or not r >= right or not r - min(left, right) > PEAK_RISE * (1.0 - r):
                 continue
+            from scipy.optimize import minimize_scalar  # here: scipy.optimize takes 0.3 s to import
+
             res = minimize_scalar(lambda a: -prob.spectral_radius(np.array([s]), np.array([a]))[0],
                                   bounds=(dext[j], dext[j + 2]), method="bounded",
                                   options={"xatol": 1e-4 * dext[j + 2]})

@@ -29,7 +29,6 @@ from __future__ import annotations
 import logging
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 __all__ = ["continued_limits", "STRIDE", "PROBES"]
 
@@ -143,6 +142,8 @@ def _below(prob, idx, root, rho0, peak_check):
             if r < peak_check or r < left or not r >= right or not r - min(left, right) > PEAK_RISE * (1.0 - r):
                 continue
             s = int(idx[e])
+            from scipy.optimize import minimize_scalar  # here: scipy.optimize takes 0.3 s to import
+
             res = minimize_scalar(lambda a: -prob.spectral_radius(np.array([s]), np.array([a]))[0],
                                   bounds=(dext[e, j - 1], dext[e, j + 1]), method="bounded",
                                   options={"xatol": 1e-4 * dext[e, j + 1]})

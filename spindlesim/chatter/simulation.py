@@ -36,7 +36,6 @@ the highest peak outside +-2 bins of the harmonics (NaN when stable).
 
 from __future__ import annotations
 
-import numba
 import numpy as np
 
 from ._expm import expm_batch
@@ -44,77 +43,6 @@ from .results import DECAYED, DIED_OUT, STABLE_GROWTH, SimulationResult
 from .tool import ToolPoint, as_state_space
 
 __all__ = ["simulate"]
-
-
-@numba.njit(cache=True)
-def _force(y, kk, E, Fv, H0, W, BIN, surf, depth, update, counts, h_count):  # pragma: no cover
-    F0 = 0.0
-    F1 = 0.0
-    for s in range(W.shape[1]):
-        w = W[kk, s]
-        if w <= 0.0:
-            continue
-        b = BIN[kk, s]
-        ey = E[kk, s, 0] * y[0] + E[kk, s, 1] * y[1]
-        h = H0[kk, s] + ey - surf[b]
-        if h > 0.0:
-            F0 += depth * w * h * Fv[kk, s, 0]
-            F1 += depth * w * h * Fv[kk, s, 1]
-            if update:
-                surf[b] = ey
-                if H0[kk, s] >= h_count:
-                    counts[0] += 1
-        elif update:
-            surf[b] -= H0[kk, s]
-            if H0[kk, s] >= h_count:
-                counts[1] += 1
-    return F0, F1
-
-
-@numba.njit(cache=True)
-def _integrate(P, G0, G1, C, E, Fv, H0, W, BIN, nbins, depth, m, periods, h_count):  # pragma: no cover
-    n = P.shape[0]
-    total = m * periods
-    Y = np.zeros((total + 1, 2))
-    Fh = np.zeros((total + 1, 2))
-    surf = np.zeros(nbins)
-    x = np.zeros(n)
-    xp = np.zeros(n)
-    y = np.zeros(2)
-    counts = np.zeros(2, np.int64)
-    late = np.zeros(2, np.int64)
-    F0, F1 = _force(y, 0, E, Fv, H0, W, BIN, surf, depth, True, counts, h_count)
-    Fh[0, 0], Fh[0, 1] = F0, F1
-    for k in range(total):
-        for a in range(n):
-            acc = G0[a, 0] * F0 + G0[a, 1] * F1
-            for b in range(n):
-                acc += P[a, b] * x[b]
-            xp[a] = acc
-        for p in range(2):
-            acc = 0.0
-            for a in range(n):
-                acc += C[p, a] * xp[a]
-            y[p] = acc
-        kk = (k + 1) % m
-        Q0, Q1 = _force(y, kk, E, Fv, H0, W, BIN, surf, depth, False, counts, h_count)
-        for a in range(n):
-            x[a] = xp[a] + G1[a, 0] * (Q0 - F0) + G1[a, 1] * (Q1 - F1)
-        for p in range(2):
-            acc = 0.0
-            for a in range(n):
-                acc += C[p, a] * x[a]
-            y[p] = acc
-        if k + 1 >= total // 2:
-            before0, before1 = counts[0], counts[1]
-            F0, F1 = _force(y, kk, E, Fv, H0, W, BIN, surf, depth, True, counts, h_count)
-            late[0] += counts[0] - before0
-            late[1] += counts[1] - before1
-        else:
-            F0, F1 = _force(y, kk, E, Fv, H0, W, BIN, surf, depth, True, counts, h_count)
-        Y[k + 1, 0], Y[k + 1, 1] = y[0], y[1]
-        Fh[k + 1, 0], Fh[k + 1, 1] = F0, F1
-    return Y, Fh, late
 
 
 def _discretise(model, dt: float):
@@ -165,7 +93,9 @@ def simulate(process, tool: ToolPoint, speed_rpm: float, depth_m: float, *, toot
     dt = tau / m
     P, G0, G1 = _discretise(model, dt)
     tab = process.cutting_tables(m, depth_m)
-    Y, F, late = _integrate(P, np.ascontiguousarray(G0), np.ascontiguousarray(G1), model.C, tab.e, tab.force,
+    from ._simulation_kernels import integrate  # numba: imported when a simulation runs (a tenth of a second)
+
+    Y, F, late = integrate(P, np.ascontiguousarray(G0), np.ascontiguousarray(G1), model.C, tab.e, tab.force,
                             tab.h0, tab.w, tab.bin, tab.nbins, float(depth_m), m, int(tooth_periods),
                             0.1 * float(tab.h0.max()))
     t = np.arange(len(Y)) * dt
