@@ -34,7 +34,6 @@ semi-discretization and the simulation; the zero-order average does not depend o
 from __future__ import annotations
 
 import functools
-
 from dataclasses import dataclass, replace
 from typing import Literal
 
