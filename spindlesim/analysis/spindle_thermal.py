@@ -273,7 +273,9 @@ class SpindleThermal:
     def warm_up(self, times_s, speeds_rpm, duration_s: float, samples: int = 25,
                 progress=None) -> tuple[ThermalState, ...]:
         """The spindle from cold (the ambient) through speed steps (``times_s``, ``speeds_rpm``) for
-        ``duration_s``: its state at ``samples`` evenly spaced instants (module note)."""
+        ``duration_s``: its state at ``samples`` evenly spaced instants and on both sides of every step within
+        the duration (the same temperatures, first at the speed before the step, then at the speed after it;
+        module note)."""
         m = self.model
         prof = StepProfile(tuple(float(t) for t in times_s), tuple(float(s) * RPM for s in speeds_rpm))
         cache: dict = {}
@@ -302,10 +304,15 @@ class SpindleThermal:
             last = cache.get("last")
             when = "" if last is None else f" at {last[3] / 60.0:.1f} min ({last[0] / RPM:g} rpm)"
             raise ThermalRunawayError(f"the warm-up ran away{when}: {exc}") from exc
+        # the speed of each instant in rpm as the deck gives it (no round trip through rad/s); a step's instant comes
+        # twice (the network's temperatures do not jump there, its sources do): first at the speed before the step
+        rpm = StepProfile(prof.times_s, tuple(float(s) for s in speeds_rpm))
+        times = [float(t) for t in res.times_s]
         out = []
-        for k, t in enumerate(res.times_s):
+        for k, t in enumerate(times):
             T = {n: float(res.temperatures_C[k, i]) for i, n in enumerate(self._names)}
-            out.append(self.at(T, prof(float(t)) / RPM, time_s=float(t)))
+            before = k + 1 < len(times) and times[k + 1] == t and t in prof.breakpoints
+            out.append(self.at(T, rpm.before(t) if before else rpm(t), time_s=t))
             if progress is not None:
                 progress(k + 1, len(res.times_s))
         return tuple(out)

@@ -156,7 +156,8 @@ class WarmUp(DeckModel):
     duration_min: Annotated[float, Field(gt=0.0, le=1e5)]
     """How long the warm-up runs."""
     samples: Annotated[int, Field(ge=2, le=2000)] = 25
-    """Instants at which the bearing states, stiffness and natural frequencies are reported (evenly spaced)."""
+    """Instants at which the bearing states, stiffness and natural frequencies are reported (evenly spaced;
+    each speed step within the duration adds its two sides)."""
 
     @model_validator(mode="after")
     def _times(self):

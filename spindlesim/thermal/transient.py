@@ -55,6 +55,10 @@ class StepProfile:
     def __call__(self, t: float) -> float:
         return self.values[max(0, bisect.bisect_right(self.times_s, t) - 1)]
 
+    def before(self, t: float) -> float:
+        """The value just before ``t`` (left limit; at a step time the value before the step)."""
+        return self.values[max(0, bisect.bisect_left(self.times_s, t) - 1)]
+
     @property
     def breakpoints(self) -> tuple[float, ...]:
         return self.times_s[1:]

@@ -11,7 +11,8 @@ Checks written here, each against something independent of the loop:
   temperatures follow than with centrifugal force alone; a spring preload holds its thrust; hybrid
   (Si3N4) balls raise the preload less than steel ones; the end of a long warm-up at one speed is the
   steady state there;
-* a runaway says which bearing and which speed.
+* a runaway says which bearing and which speed;
+* a warm-up's speed step on both of its sides, the side before equal to a warm-up that ends there.
 """
 
 from __future__ import annotations
@@ -202,3 +203,21 @@ def test_radial_drift_is_the_tips_deflection_and_zero_without_loads(spindle):
     free = _thermal(_deck(unloaded)).steady(4000.0)
     assert max(abs(v) for v in free.tool_tip_radial_m) < 1e-12
     assert abs(free.tool_tip_axial_drift_m) > 5e-6
+
+
+def test_a_speed_step_is_reported_on_both_sides_at_the_deck_speeds(spindle):
+    """A step inside the warm-up comes twice at its instant, the same temperatures (they do not jump), first at the
+    speed before the step, then at the speed after it, each the deck's number (no rad/s round trip).  The side
+    before is what a warm-up that ends there at the first speed reports: an independent run (no step in it)."""
+    steps = spindle.warm_up((0.0, 600.0), (4000.0, 12000.0), 1200.0, samples=2)
+    assert [s.time_s for s in steps] == [0.0, 600.0, 600.0, 1200.0]
+    assert [s.speed_rpm for s in steps] == [4000.0, 4000.0, 12000.0, 12000.0]
+    before, after = steps[1], steps[2]
+    assert before.temperatures_C == after.temperatures_C
+    alone = spindle.warm_up((0.0,), (4000.0,), 600.0, samples=2)[-1]
+    assert alone.speed_rpm == 4000.0
+    for name, t in alone.temperatures_C.items():
+        assert before.temperatures_C[name] == pytest.approx(t, abs=1e-6), name
+    assert _front_thrust(before) == pytest.approx(_front_thrust(alone), rel=1e-9)
+    # the heat jumps with the speed at the step (the front pair's friction grows with it)
+    assert after.heat_W["bearing:front"] > 2.0 * before.heat_W["bearing:front"]
