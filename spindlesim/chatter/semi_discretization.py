@@ -133,11 +133,14 @@ def parallel_map(fn, items) -> list:
 N_MULTIPLIERS = 6
 #: Arnoldi's basis: the multipliers outside the cluster near zero are about as many as the structure's states
 #: n, and ARPACK's default 2k + 1 = 13 vectors restart often when they crowd the unit circle (a rotor's
-#: dominant modes near a stability boundary).  n + 12, at least 13, at most 30: the milling deck's
-#: 18-state monodromy matrices at 0.99 of the limit (178-718 states) take 0.82 ms each against 1.64 ms
-#: with 13 (the same rho to 1e-14), while a one- or four-mode model keeps ARPACK's speed (30 vectors
-#: there: 10-15 % slower)
-ARNOLDI_BASIS = (13, 30)
+#: dominant modes near a stability boundary).  n + 12, at least 13 (and below the matrix's order): the milling
+#: deck's 18-state monodromy matrices at 0.99 of the limit (178-718 states) take 0.82 ms each against 1.64 ms
+#: with 13 (the same rho to 1e-14), while a one- or four-mode model keeps ARPACK's speed (30 vectors there:
+#: 10-15 % slower).  No upper bound below that: a tool library's short tools (42- and 54-state models, 154-754
+#: states, captured from a run) took 7.5 and 11.1 ms a matrix with at most 30 vectors, 3.8 and 4.9 ms with n + 12
+#: (rho equal to the dense eigenvalues' within 1e-14 either way); the whole `tools` of the 54-state tool 0.97 of
+#: its wall time on threads, unchanged with the worker processes
+ARNOLDI_MIN_BASIS = 13
 
 
 #: Arnoldi restarts before the dense eigenvalues take over: a converging case needs a few, while a monodromy whose
@@ -146,8 +149,9 @@ ARNOLDI_BASIS = (13, 30)
 ARNOLDI_RESTARTS = 60
 
 
-def _arnoldi_basis(n_states: int) -> int:
-    return int(np.clip(n_states + 12, *ARNOLDI_BASIS))
+def _arnoldi_basis(n_states: int, order: int) -> int:
+    """ARPACK's basis for a monodromy matrix of ``order`` from a structure of ``n_states`` (ARNOLDI_MIN_BASIS)."""
+    return int(min(max(n_states + 12, ARNOLDI_MIN_BASIS), order - 1))
 
 
 def _largest_multipliers(Phi: np.ndarray, n_states: int) -> np.ndarray:
@@ -166,7 +170,7 @@ def _largest_multipliers(Phi: np.ndarray, n_states: int) -> np.ndarray:
     for e in range(E):
         try:
             ev = eigs(Phi[e], k=k, which="LM", return_eigenvectors=False, tol=1e-12, v0=v0, maxiter=ARNOLDI_RESTARTS,
-                      ncv=_arnoldi_basis(n_states))
+                      ncv=_arnoldi_basis(n_states, N))
         except ArpackNoConvergence:
             ev = np.linalg.eigvals(Phi[e])
         out[e] = ev[np.argsort(-np.abs(ev), kind="stable")[:k]]
@@ -178,7 +182,7 @@ def _dominant_eigenpair(Phi: np.ndarray, n_states: int) -> tuple[complex, np.nda
     if len(Phi) > 64:
         try:
             ev, V = eigs(Phi, k=N_MULTIPLIERS, which="LM", tol=1e-12, v0=np.ones(len(Phi)), maxiter=ARNOLDI_RESTARTS,
-                         ncv=_arnoldi_basis(n_states))
+                         ncv=_arnoldi_basis(n_states, len(Phi)))
             j = int(np.argmax(np.abs(ev)))
             return complex(ev[j]), V[:, j]
         except ArpackNoConvergence:
