@@ -277,7 +277,8 @@ class SpindleThermal:
         the duration (the same temperatures, first at the speed before the step, then at the speed after it;
         module note)."""
         m = self.model
-        prof = StepProfile(tuple(float(t) for t in times_s), tuple(float(s) * RPM for s in speeds_rpm))
+        rpm = StepProfile(tuple(float(t) for t in times_s), tuple(float(s) for s in speeds_rpm))  # as the deck gives it
+        prof = StepProfile(rpm.times_s, tuple(s * RPM for s in rpm.values))
         cache: dict = {}
 
         def bearing_heat(w, T, t):
@@ -304,9 +305,8 @@ class SpindleThermal:
             last = cache.get("last")
             when = "" if last is None else f" at {last[3] / 60.0:.1f} min ({last[0] / RPM:g} rpm)"
             raise ThermalRunawayError(f"the warm-up ran away{when}: {exc}") from exc
-        # the speed of each instant in rpm as the deck gives it (no round trip through rad/s); a step's instant comes
-        # twice (the network's temperatures do not jump there, its sources do): first at the speed before the step
-        rpm = StepProfile(prof.times_s, tuple(float(s) for s in speeds_rpm))
+        # each instant at ``rpm`` (no round trip through rad/s); a step's instant comes twice (the network's
+        # temperatures do not jump there, its sources do): first at the speed before the step
         times = [float(t) for t in res.times_s]
         out = []
         for k, t in enumerate(times):
